@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "contact_app/kernel/linear_master_slave_constraint.h"
+
+#include "contact_app/kernel/exceptions.h"
+
+namespace contact_app {
+
+LinearMasterSlaveConstraint::LinearMasterSlaveConstraint(IndexType id, DofsVectorType master_dofs,
+                                                         DofsVectorType slave_dofs, Matrix relation,
+                                                         Vector constant)
+    : MasterSlaveConstraint(id, std::move(master_dofs), std::move(slave_dofs)),
+      mRelation(std::move(relation)),
+      mConstant(std::move(constant)) {
+    const auto slaves = static_cast<Eigen::Index>(GetSlaveDofsVector().size());
+    const auto masters = static_cast<Eigen::Index>(GetMasterDofsVector().size());
+    CONTACT_CHECK(mRelation.rows() == slaves && mRelation.cols() == masters, InputError, Info(),
+                  ": relation matrix is ", mRelation.rows(), "x", mRelation.cols(), ", expected ", slaves, "x",
+                  masters, " (slave DoFs x master DoFs)");
+    CONTACT_CHECK(mConstant.size() == slaves, InputError, Info(), ": constant vector has ", mConstant.size(),
+                  " entries, expected one per slave DoF (", slaves, ")");
+}
+
+MasterSlaveConstraint::Pointer LinearMasterSlaveConstraint::Create(IndexType id, DofsVectorType master_dofs,
+                                                                   DofsVectorType slave_dofs,
+                                                                   const Matrix& relation,
+                                                                   const Vector& constant) const {
+    return std::make_shared<LinearMasterSlaveConstraint>(id, std::move(master_dofs), std::move(slave_dofs),
+                                                         relation, constant);
+}
+
+void LinearMasterSlaveConstraint::CalculateLocalSystem(Matrix& rTransformationMatrix, Vector& rConstantVector,
+                                                       const ProcessInfo&) {
+    rTransformationMatrix = mRelation;
+    rConstantVector = mConstant;
+}
+
+std::string LinearMasterSlaveConstraint::Info() const {
+    return "LinearMasterSlaveConstraint #" + std::to_string(Id());
+}
+
+}  // namespace contact_app

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include "contact_app/kernel/master_slave_constraint.h"
+
+namespace contact_app {
+
+/// A constant linear relation u_s = T u_m + c (Kratos LinearMasterSlaveConstraint).
+class LinearMasterSlaveConstraint : public MasterSlaveConstraint {
+public:
+    LinearMasterSlaveConstraint() = default;
+    /// @param relation slaves × masters; @param constant one entry per slave.
+    /// @throws InputError if the sizes do not match the DoF counts.
+    LinearMasterSlaveConstraint(IndexType id, DofsVectorType master_dofs, DofsVectorType slave_dofs,
+                                Matrix relation, Vector constant);
+
+    Pointer Create(IndexType id, DofsVectorType master_dofs, DofsVectorType slave_dofs, const Matrix& relation,
+                   const Vector& constant) const override;
+    void CalculateLocalSystem(Matrix& rTransformationMatrix, Vector& rConstantVector,
+                              const ProcessInfo& rCurrentProcessInfo) override;
+    std::string Info() const override;
+
+private:
+    Matrix mRelation;
+    Vector mConstant;
+};
+
+}  // namespace contact_app

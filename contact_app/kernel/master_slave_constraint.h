@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "contact_app/kernel/data_value_container.h"
+#include "contact_app/kernel/dof.h"
+#include "contact_app/kernel/flags.h"
+#include "contact_app/kernel/process_info.h"
+#include "contact_app/kernel/types.h"
+
+namespace contact_app {
+
+/// A multipoint constraint u_slave = T · u_master + c (Kratos MasterSlaveConstraint).
+/// The base class stores the DoF lists; derived classes supply T and c in CalculateLocalSystem
+/// and may rebuild them in the life-cycle hooks (the contact MPC constraint does).
+class MasterSlaveConstraint : public Flags {
+public:
+    using Pointer = std::shared_ptr<MasterSlaveConstraint>;
+
+    explicit MasterSlaveConstraint(IndexType id = 0) : mId(id) {}
+    MasterSlaveConstraint(IndexType id, DofsVectorType master_dofs, DofsVectorType slave_dofs)
+        : mId(id), mMasterDofs(std::move(master_dofs)), mSlaveDofs(std::move(slave_dofs)) {}
+    virtual ~MasterSlaveConstraint() = default;
+
+    /// A new constraint of the same class. @param relation slaves × masters; @param constant one per slave.
+    /// @throws InputError if the sizes do not match the DoF counts.
+    virtual Pointer Create(IndexType id, DofsVectorType master_dofs, DofsVectorType slave_dofs,
+                           const Matrix& relation, const Vector& constant) const;
+
+    IndexType Id() const { return mId; }
+    void SetId(IndexType id) { mId = id; }
+
+    template <class T>
+    T GetValue(const Variable<T>& variable) const { return mData.GetValue(variable); }
+    template <class T>
+    void SetValue(const Variable<T>& variable, const T& value) { mData.SetValue(variable, value); }
+    bool Has(const VariableData& variable) const { return mData.Has(variable); }
+
+    virtual void Initialize(const ProcessInfo& rCurrentProcessInfo);
+    virtual void InitializeSolutionStep(const ProcessInfo& rCurrentProcessInfo);
+    virtual void InitializeNonLinearIteration(const ProcessInfo& rCurrentProcessInfo);
+    virtual void FinalizeNonLinearIteration(const ProcessInfo& rCurrentProcessInfo);
+    virtual void FinalizeSolutionStep(const ProcessInfo& rCurrentProcessInfo);
+
+    virtual void GetDofList(DofsVectorType& rSlaveDofsVector, DofsVectorType& rMasterDofsVector,
+                            const ProcessInfo& rCurrentProcessInfo) const;
+    virtual void SetDofList(const DofsVectorType& rSlaveDofsVector, const DofsVectorType& rMasterDofsVector,
+                            const ProcessInfo& rCurrentProcessInfo);
+    virtual void EquationIdVector(EquationIdVectorType& rSlaveEquationIds, EquationIdVectorType& rMasterEquationIds,
+                                  const ProcessInfo& rCurrentProcessInfo) const;
+    const DofsVectorType& GetSlaveDofsVector() const { return mSlaveDofs; }
+    const DofsVectorType& GetMasterDofsVector() const { return mMasterDofs; }
+
+    /// The relation T (slaves × masters) and constant c. Base: an empty relation.
+    virtual void CalculateLocalSystem(Matrix& rTransformationMatrix, Vector& rConstantVector,
+                                      const ProcessInfo& rCurrentProcessInfo);
+    /// Sets the slave values to T · u_master + c.
+    virtual void Apply(const ProcessInfo& rCurrentProcessInfo);
+    virtual int Check(const ProcessInfo& rCurrentProcessInfo) const;
+    virtual std::string Info() const;
+
+protected:
+    DofsVectorType& MasterDofs() { return mMasterDofs; }
+    DofsVectorType& SlaveDofs() { return mSlaveDofs; }
+
+private:
+    IndexType mId;
+    DofsVectorType mMasterDofs;
+    DofsVectorType mSlaveDofs;
+    DataValueContainer mData;
+};
+
+}  // namespace contact_app

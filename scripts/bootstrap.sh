@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs what a fresh Debian machine lacks, then builds contact_app in place (editable install).
+# Idempotent and quiet when everything is already there. Usage: bash scripts/bootstrap.sh
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+apt_packages=(build-essential libeigen3-dev libsuitesparse-dev libgtest-dev ccache ninja-build)
+missing=()
+for package in "${apt_packages[@]}"; do
+  dpkg -s "$package" >/dev/null 2>&1 || missing+=("$package")
+done
+if ((${#missing[@]})); then
+  echo "bootstrap: installing system packages: ${missing[*]}"
+  sudo_cmd=""
+  [ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
+  $sudo_cmd apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
+
+python=${PYTHON:-python3}
+if ! "$python" -c "import scikit_build_core, pybind11, numpy, meshio, pytest, cmake" >/dev/null 2>&1; then
+  echo "bootstrap: installing Python build and test packages"
+  "$python" -m pip install -q "scikit-build-core>=0.9" "pybind11>=2.12" "numpy>=1.24" "meshio>=5.3" \
+    "pytest>=7.4" "ruff>=0.5" "cmake>=3.20" ninja
+fi
+
+# Incremental C++ build (ccache + a persistent build/python directory): fast when nothing changed.
+start=$(date +%s)
+CMAKE_BUILD_PARALLEL_LEVEL=${CMAKE_BUILD_PARALLEL_LEVEL:-$(nproc)} \
+  "$python" -m pip install -q --no-build-isolation -e ".[test]" \
+  -Ccmake.define.CONTACT_APP_BUILD_TESTS=ON 2>&1 | grep -v "^$" || true
+"$python" -c "import contact_app" || { echo "bootstrap: the build failed (see above)"; exit 1; }
+echo "bootstrap: build and install took $(( $(date +%s) - start )) s"

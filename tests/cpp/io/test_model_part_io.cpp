@@ -1,0 +1,288 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Reading .mdpa files: the Kratos reference meshes and a table of malformed inputs.
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "contact_app/application.h"
+#include "contact_app/io/model_part_io.h"
+#include "contact_app/kernel/model.h"
+#include "contact_app/kernel/registry.h"
+#include "contact_app/kernel/variables.h"
+
+namespace contact_app {
+namespace {
+
+/// The reference meshes name structural elements and load conditions, which the structural
+/// layer registers. Until it is linked here, geometry-only stand-ins with the same names and
+/// geometries let the reader be tested on the real files (reading does not depend on physics).
+void RegisterStructuralStandIns() {
+    RegisterContactApplication();
+    const std::pair<const char*, const char*> elements[] = {{"SmallDisplacementElement2D4N", "Element2D4N"},
+                                                            {"SmallDisplacementElement3D8N", "Element3D8N"}};
+    for (const auto& [name, generic] : elements) {
+        auto& registry = Registry<Element>::Instance();
+        if (!registry.Has(name)) registry.Add(name, std::make_shared<Element>(registry.Get(generic)));
+    }
+    const std::pair<const char*, const char*> conditions[] = {{"LineLoadCondition2D2N", "LineCondition2D2N"},
+                                                              {"SurfaceLoadCondition3D4N", "SurfaceCondition3D4N"}};
+    for (const auto& [name, generic] : conditions) {
+        auto& registry = Registry<Condition>::Instance();
+        if (!registry.Has(name)) registry.Add(name, std::make_shared<Condition>(registry.Get(generic)));
+    }
+}
+
+ModelPart& NewStructure(Model& model) {
+    ModelPart& part = model.CreateModelPart("Structure", 2);
+    part.AddNodalSolutionStepVariable(DISPLACEMENT);
+    part.AddNodalSolutionStepVariable(REACTION);
+    part.AddNodalSolutionStepVariable(TEMPERATURE);
+    return part;
+}
+
+struct ReferenceCase {
+    const char* file;
+    std::size_t nodes, elements, conditions, sub_model_parts;
+    const char* interface_part;
+    std::size_t interface_nodes;
+};
+
+class ReferenceMeshTest : public ::testing::TestWithParam<ReferenceCase> {};
+
+TEST_P(ReferenceMeshTest, ReadsTheCountsOfTheFile) {
+    RegisterStructuralStandIns();
+    const ReferenceCase& reference = GetParam();
+    Model model;
+    ModelPart& part = NewStructure(model);
+    ModelPartIO(std::string(CONTACT_APP_KRATOS_CASES) + "/" + reference.file).ReadModelPart(part);
+    EXPECT_EQ(part.NumberOfNodes(), reference.nodes);
+    EXPECT_EQ(part.NumberOfElements(), reference.elements);
+    EXPECT_EQ(part.NumberOfConditions(), reference.conditions);
+    EXPECT_EQ(part.NumberOfSubModelParts(), reference.sub_model_parts);
+    EXPECT_EQ(part.GetSubModelPart(reference.interface_part).NumberOfNodes(), reference.interface_nodes);
+    EXPECT_TRUE(part.HasProperties(0));
+    // Every element node is a node of the root, and sub model part entities belong to the root.
+    for (const auto& element : part.Elements())
+        for (std::size_t i = 0; i < element->GetGeometry().PointsNumber(); ++i)
+            EXPECT_TRUE(part.HasNode(element->GetGeometry()[i].Id()));
+    for (ModelPart* sub : part.SubModelParts())
+        for (const auto& node : sub->Nodes()) EXPECT_EQ(part.pGetNode(node->Id()), node);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    KratosCases, ReferenceMeshTest,
+    ::testing::Values(
+        ReferenceCase{"ALM_frictional_contact_test_2D/hyper_simple_patch_test", 8, 2, 0, 6, "Contact_Part", 4},
+        ReferenceCase{"ALM_frictionless_contact_test_2D/hyper_simple_patch_test", 8, 2, 0, 8, "Contact_Part", 4},
+        ReferenceCase{"ALM_frictionless_contact_test_2D/taylor_patch_test", 37, 21, 7, 7, "Contact_Part", 11},
+        ReferenceCase{"ALM_frictionless_contact_test_3D/3D_contact_simplest_patch_matching_slope_test", 16, 2, 1, 8,
+                      "Contact_Part", 8},
+        ReferenceCase{"mesh_tying_test/simple_patch_test_2D", 24, 12, 0, 6, "Tying_Part", 8},
+        ReferenceCase{"mpc_contact_tests/2D_contact_simplest_patch_matching_test", 8, 2, 2, 6, "Contact_Part_Slave", 2},
+        ReferenceCase{"penalty_frictional_contact_test_2D/hyper_simple_patch_test", 8, 2, 0, 6, "Contact_Part", 4},
+        ReferenceCase{"penalty_frictionless_contact_test_2D/hyper_simple_patch_test", 8, 2, 0, 6, "Contact_Part", 4}));
+
+/// Writes @p text to a temporary .mdpa file and returns its path without the extension.
+std::string WriteMdpa(const std::string& name, const std::string& text) {
+    const auto path = std::filesystem::temp_directory_path() / ("contact_app_test_" + name);
+    std::ofstream(path.string() + ".mdpa") << text;
+    return path.string();
+}
+
+const char* const kValidMesh = R"(Begin ModelPartData
+// a comment line
+End ModelPartData
+Begin Properties 1
+  YOUNG_MODULUS 2.1e5
+  POISSON_RATIO 0.3
+  VOLUME_ACCELERATION [3] (0.0, -9.81, 0.0)
+  Begin Table TEMPERATURE YOUNG_MODULUS
+    0.0 1.0
+    100.0 0.5
+  End Table
+End Properties
+Begin Table 7 TIME PRESSURE
+  0.0 0.0
+  1.0 10.0
+End Table
+Begin Nodes
+  3 1.0 1.0 0.0
+  1 0.0 0.0 0.0
+  2 1.0 0.0 0.0
+  4 0.0 1.0 0.0
+End Nodes
+Begin Elements Element2D4N// GUI group identifier: glued comment
+  1 1 1 2 3 4
+End Elements
+Begin Conditions LineCondition2D2N
+  5 1 1 2
+End Conditions
+Begin Geometries Triangle2D3
+  9 1 2 3
+End Geometries
+Begin Constraints LinearMasterSlaveConstraint DISPLACEMENT_X
+  1 0.0 [0.25, 0.75] 4 1 2
+End Constraints
+Begin NodalData DISPLACEMENT_Y
+  1 1 0.5
+  2 0 -0.25
+End NodalData
+Begin NodalData DISPLACEMENT
+  3 0 [3](1.0,2.0,3.0)
+End NodalData
+Begin NodalData SLAVE
+  4
+End NodalData
+Begin ElementalData THICKNESS
+  1 0.1
+End ElementalData
+Begin ConditionalData PRESSURE
+  5 3.5
+End ConditionalData
+Begin SubModelPart Outer
+  Begin SubModelPartData
+    DENSITY 7850.0
+  End SubModelPartData
+  Begin SubModelPartTables
+    7
+  End SubModelPartTables
+  Begin SubModelPartNodes
+    1 2
+  End SubModelPartNodes
+  Begin SubModelPart Inner
+    Begin SubModelPartNodes
+      3
+    End SubModelPartNodes
+    Begin SubModelPartConditions
+      5
+    End SubModelPartConditions
+  End SubModelPart
+End SubModelPart
+)";
+
+TEST(ModelPartIO, ReadsEveryBlockKindWithItsValues) {
+    RegisterContactApplication();
+    Model model;
+    ModelPart& part = NewStructure(model);
+    ModelPartIO(WriteMdpa("valid", kValidMesh)).ReadModelPart(part);
+
+    EXPECT_EQ(part.NumberOfNodes(), 4u);
+    EXPECT_EQ(part.Nodes()[0].Id(), 1u);  // sorted by id although listed out of order
+    const Properties& properties = part.GetProperties(1);
+    EXPECT_DOUBLE_EQ(properties.GetValue(YOUNG_MODULUS), 2.1e5);
+    EXPECT_DOUBLE_EQ(properties.GetValue(VOLUME_ACCELERATION)[1], -9.81);
+    EXPECT_DOUBLE_EQ(properties.GetTable(TEMPERATURE, YOUNG_MODULUS).GetValue(50.0), 0.75);
+    EXPECT_DOUBLE_EQ(part.GetTable(7).GetValue(0.5), 5.0);
+    EXPECT_EQ(part.GetElement(1).GetGeometry().Name(), "Quadrilateral2D4");
+    EXPECT_DOUBLE_EQ(part.GetElement(1).GetGeometry().Area(), 1.0);
+    EXPECT_EQ(&part.GetElement(1).GetProperties(), &properties);
+    EXPECT_DOUBLE_EQ(part.GetElement(1).GetValue(THICKNESS), 0.1);
+    EXPECT_DOUBLE_EQ(part.GetCondition(5).GetValue(PRESSURE), 3.5);
+    EXPECT_EQ(part.pGetGeometry(9)->Name(), "Triangle2D3");
+
+    const Node& node1 = part.GetNode(1);
+    EXPECT_DOUBLE_EQ(node1.GetSolutionStepValue(DISPLACEMENT_Y), 0.5);
+    EXPECT_TRUE(node1.IsFixed(DISPLACEMENT_Y));
+    EXPECT_FALSE(part.GetNode(2).IsFixed(DISPLACEMENT_Y));
+    EXPECT_DOUBLE_EQ(part.GetNode(2).GetSolutionStepValue(DISPLACEMENT_Y), -0.25);
+    EXPECT_DOUBLE_EQ(part.GetNode(3).GetSolutionStepValue(DISPLACEMENT)[2], 3.0);
+    EXPECT_TRUE(part.GetNode(4).Is(SLAVE));
+    EXPECT_FALSE(part.GetNode(3).Is(SLAVE));
+
+    ASSERT_EQ(part.NumberOfMasterSlaveConstraints(), 1u);
+    Matrix relation;
+    Vector constant;
+    part.GetMasterSlaveConstraint(1).CalculateLocalSystem(relation, constant, part.GetProcessInfo());
+    EXPECT_EQ(relation.rows(), 1);
+    EXPECT_DOUBLE_EQ(relation(0, 1), 0.75);
+    EXPECT_EQ(part.GetMasterSlaveConstraint(1).GetSlaveDofsVector()[0]->Id(), 4u);
+    EXPECT_EQ(part.GetMasterSlaveConstraint(1).GetMasterDofsVector()[1]->Id(), 2u);
+
+    ModelPart& outer = part.GetSubModelPart("Outer");
+    EXPECT_DOUBLE_EQ(outer.GetValue(DENSITY), 7850.0);
+    EXPECT_EQ(outer.NumberOfNodes(), 3u);  // 1, 2 and node 3 of the nested part
+    EXPECT_EQ(outer.NumberOfTables(), 1u);
+    ModelPart& inner = model.GetModelPart("Structure.Outer.Inner");
+    EXPECT_EQ(inner.NumberOfNodes(), 1u);
+    EXPECT_EQ(inner.NumberOfConditions(), 1u);
+    EXPECT_TRUE(outer.HasCondition(5));
+}
+
+struct MalformedCase {
+    const char* name;
+    std::string text;
+    int line;              // expected line in the message (0: no line, e.g. missing file)
+    const char* contains;  // expected fragment of the reason
+};
+
+class MalformedMdpaTest : public ::testing::TestWithParam<MalformedCase> {};
+
+TEST_P(MalformedMdpaTest, GivesFileLineAndReason) {
+    RegisterContactApplication();
+    const MalformedCase& bad = GetParam();
+    Model model;
+    ModelPart& part = NewStructure(model);
+    const std::string path = WriteMdpa(bad.name, bad.text);
+    try {
+        ModelPartIO(path).ReadModelPart(part);
+        FAIL() << "no error for " << bad.name;
+    } catch (const InputError& error) {
+        const std::string message = error.what();
+        SCOPED_TRACE(message);
+        EXPECT_NE(message.find(bad.contains), std::string::npos);
+        if (bad.line > 0) EXPECT_NE(message.find(path + ".mdpa:" + std::to_string(bad.line) + ":"), std::string::npos);
+    }
+}
+
+const std::string kNodes = "Begin Nodes\n 1 0 0 0\n 2 1 0 0\n 3 1 1 0\n 4 0 1 0\nEnd Nodes\n";  // lines 1-6
+
+INSTANTIATE_TEST_SUITE_P(
+    Table, MalformedMdpaTest,
+    ::testing::Values(
+        MalformedCase{"unknown_block", "Begin Nodez\nEnd Nodez\n", 1, "did you mean \"Nodes\""},
+        MalformedCase{"missing_end", "Begin Nodes\n 1 0 0 0\n", 2, "ends inside the \"Nodes\" block opened at line 1"},
+        MalformedCase{"wrong_end", "Begin Nodes\n 1 0 0 0\nEnd Elements\n", 3, "expected \"End Nodes\""},
+        MalformedCase{"short_node_line", "Begin Nodes\n 1 0 0\nEnd Nodes\n", 2, "needs 4 values (id x y z), found 3"},
+        MalformedCase{"bad_coordinate", "Begin Nodes\n 1 0 zero 0\nEnd Nodes\n", 2, "\"zero\" is not a valid y coordinate"},
+        MalformedCase{"negative_node_id", "Begin Nodes\n -1 0 0 0\nEnd Nodes\n", 2, "not a valid node id"},
+        MalformedCase{"duplicate_node", "Begin Nodes\n 1 0 0 0\n 1 1 0 0\nEnd Nodes\n", 3,
+                      "node 1 is defined twice (first at line 2)"},
+        MalformedCase{"unknown_element", kNodes + "Begin Elements Element2D4M\n 1 0 1 2 3 4\nEnd Elements\n", 7,
+                      "did you mean \"Element2D4N\""},
+        MalformedCase{"wrong_node_count", kNodes + "Begin Elements Element2D4N\n 1 0 1 2 3\nEnd Elements\n", 8,
+                      "needs 4 node ids after its id and property id, found 3"},
+        MalformedCase{"undefined_node", kNodes + "Begin Conditions LineCondition2D2N\n 1 0 1 9\nEnd Conditions\n", 8,
+                      "uses node 9, which is not defined"},
+        MalformedCase{"unknown_variable", "Begin Properties 0\n YOUNGS_MODULUS 1.0\nEnd Properties\n", 2,
+                      "did you mean \"YOUNG_MODULUS\""},
+        MalformedCase{"bad_vector", "Begin Properties 0\n VOLUME_ACCELERATION [3](1.0,2.0)\nEnd Properties\n", 2,
+                      "is not a 3-vector"},
+        MalformedCase{"nodal_data_not_historical", kNodes + "Begin NodalData PRESSURE\n 1 0 1.0\nEnd NodalData\n", 8,
+                      "AddNodalSolutionStepVariable"},
+        MalformedCase{"sub_model_part_unknown_node",
+                      kNodes + "Begin SubModelPart A\n Begin SubModelPartNodes\n 1 77\n End SubModelPartNodes\nEnd SubModelPart\n",
+                      10, "node 77"},
+        MalformedCase{"unknown_sub_block", "Begin SubModelPart A\n Begin SubModelPartNode\n End SubModelPartNode\nEnd SubModelPart\n",
+                      2, "did you mean \"SubModelPartNodes\""},
+        MalformedCase{"text_outside_block", "Nodes 1 2 3\n", 1, "expected \"Begin <Block>\""},
+        MalformedCase{"duplicate_element",
+                      kNodes + "Begin Elements Element2D4N\n 1 0 1 2 3 4\nEnd Elements\nBegin Elements Element2D4N\n 1 0 1 2 3 4\nEnd Elements\n",
+                      12, "element 1 is defined twice"},
+        MalformedCase{"table_row", "Begin Table 1 TIME PRESSURE\n 0.0\nEnd Table\n", 2, "needs two numbers"}),
+    [](const ::testing::TestParamInfo<MalformedCase>& info) { return std::string(info.param.name); });
+
+TEST(ModelPartIO, MissingFileNamesThePath) {
+    Model model;
+    ModelPart& part = model.CreateModelPart("Structure");
+    try {
+        ModelPartIO("/nonexistent/mesh").ReadModelPart(part);
+        FAIL();
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("/nonexistent/mesh.mdpa"), std::string::npos);
+    }
+}
+
+}  // namespace
+}  // namespace contact_app
