@@ -41,7 +41,6 @@ public:
     std::vector<std::vector<std::size_t>> LocalFacesConnectivity() const override;
 
     std::size_t NumberOfGeometryParts() const override { return mParts.size(); }
-    using Geometry::GetGeometryPart;
     /// @brief Part @p index: 0 slave/parent, 1 master/paired. @throws InputError if @p index > 1
     Pointer pGetGeometryPart(std::size_t index) const override;
     /// @brief Replaces part @p index (0 also replaces this geometry's points).

@@ -119,8 +119,8 @@ void Geometry::InverseOfJacobian(Matrix& rInverse, const Array3& local, Configur
     Matrix J;
     Jacobian(J, local, configuration);
     CONTACT_CHECK(
-        J.rows() == J.cols() && J.cols() > 0, InputError, "InverseOfJacobian needs a square Jacobian; ",
-        Name(), " ", NodeIdsString(), " has a ", J.rows(), "×", J.cols(),
+        J.rows() == J.cols() && J.cols() > 0, InputError, "InverseOfJacobian needs a square Jacobian; ", Name(),
+        " ", NodeIdsString(), " has a ", J.rows(), "×", J.cols(),
         " one\n  fix: use DeterminantOfJacobian() / UnitNormal() for lines and surfaces in higher space");
     const double det = J.determinant();
     const double scale = std::pow(J.norm(), static_cast<double>(J.cols()));
@@ -154,8 +154,10 @@ Geometry::NewtonStatus Geometry::SolveLocalCoordinates(const Array3& global, Arr
         Jacobian(J, rLocal);
         const Matrix JtJ = J.transpose() * J;
         const double mean = JtJ.trace() / local_dim;
+        // Singular at the centroid: the geometry is degenerate. Later (an iterate outside a distorted
+        // element may hit a fold of the extrapolated map): the point is just not reachable.
         if (!(mean > 0.0) || JtJ.determinant() <= kSingularRatio * std::pow(mean, local_dim))
-            return NewtonStatus::Singular;
+            return iteration == 0 ? NewtonStatus::Singular : NewtonStatus::NotConverged;
         const Vector residual = (global - GlobalCoordinates(rLocal)).head(working_dim);
         // Square J: Newton; rectangular J: Gauss–Newton, i.e. the least-squares (closest point) step.
         const Vector step = J.colPivHouseholderQr().solve(residual);
@@ -170,11 +172,10 @@ Geometry::NewtonStatus Geometry::SolveLocalCoordinates(const Array3& global, Arr
 Array3 Geometry::PointLocalCoordinates(const Array3& global) const {
     Array3 local;
     const NewtonStatus status = SolveLocalCoordinates(global, local);
-    CONTACT_CHECK(
-        status != NewtonStatus::Singular, InputError, "cannot compute local coordinates of point ",
-        Format(global), " in ", Name(), " with nodes ", NodeIdsString(),
-        ": the Jacobian is singular (zero length/area/volume)\n  expected: a non-degenerate geometry",
-        "\n  fix: remove the collapsed element or separate its coincident/collinear nodes");
+    CONTACT_CHECK(status != NewtonStatus::Singular, InputError, "cannot compute local coordinates of point ",
+                  Format(global), " in ", Name(), " with nodes ", NodeIdsString(),
+                  ": the Jacobian is singular (zero length/area/volume)\n  expected: a non-degenerate geometry",
+                  "\n  fix: remove the collapsed element or separate its coincident/collinear nodes");
     CONTACT_CHECK(
         status == NewtonStatus::Converged, InputError, "local coordinates of point ", Format(global), " in ",
         Name(), " with nodes ", NodeIdsString(), " did not converge in ", kMaxNewtonIterations,
@@ -252,12 +253,6 @@ Array3 Geometry::UnitNormal(const Array3& local) const {
                   "\n  fix: remove the collapsed element or separate its coincident/collinear nodes");
     return normal / norm;
 }
-
-Geometry& Geometry::GetGeometryPart(std::size_t index) {
-    return const_cast<Geometry&>(static_cast<const Geometry&>(*this).GetGeometryPart(index));
-}
-
-const Geometry& Geometry::GetGeometryPart(std::size_t index) const { return *pGetGeometryPart(index); }
 
 Geometry::Pointer Geometry::pGetGeometryPart(std::size_t index) const {
     CONTACT_THROW(InputError, "geometry part ", index, " requested from ", Name(), " with nodes ",

@@ -47,8 +47,7 @@ Connectivity LinearTriangleEdges() { return {{1, 2}, {2, 0}, {0, 1}}; }
 void BilinearQuadrilateralValues(Vector& rN, const Array3& local) {
     const auto& nodes = kQuadrilateralNodes;
     rN.resize(4);
-    for (int k = 0; k < 4; ++k)
-        rN[k] = 0.25 * (1.0 + nodes[k][0] * local[0]) * (1.0 + nodes[k][1] * local[1]);
+    for (int k = 0; k < 4; ++k) rN[k] = 0.25 * (1.0 + nodes[k][0] * local[0]) * (1.0 + nodes[k][1] * local[1]);
 }
 
 void BilinearQuadrilateralGradients(Matrix& rDN, const Array3& local) {
@@ -73,8 +72,7 @@ void QuadraticSimplexValues(Vector& rN, const Vector& barycentric, const Connect
     rN.resize(corners + static_cast<Eigen::Index>(edges.size()));
     for (Eigen::Index k = 0; k < corners; ++k) rN[k] = barycentric[k] * (2.0 * barycentric[k] - 1.0);
     for (std::size_t e = 0; e < edges.size(); ++e)
-        rN[corners + static_cast<Eigen::Index>(e)] =
-            4.0 * barycentric[edges[e][0]] * barycentric[edges[e][1]];
+        rN[corners + static_cast<Eigen::Index>(e)] = 4.0 * barycentric[edges[e][0]] * barycentric[edges[e][1]];
 }
 
 void QuadraticSimplexGradients(Matrix& rDN, const Vector& barycentric, const Matrix& barycentric_gradients,
@@ -85,9 +83,8 @@ void QuadraticSimplexGradients(Matrix& rDN, const Vector& barycentric, const Mat
         rDN.row(k) = (4.0 * barycentric[k] - 1.0) * barycentric_gradients.row(k);
     for (std::size_t e = 0; e < edges.size(); ++e) {
         const auto a = static_cast<Eigen::Index>(edges[e][0]), b = static_cast<Eigen::Index>(edges[e][1]);
-        rDN.row(corners + static_cast<Eigen::Index>(e)) =
-            4.0 *
-            (barycentric[b] * barycentric_gradients.row(a) + barycentric[a] * barycentric_gradients.row(b));
+        rDN.row(corners + static_cast<Eigen::Index>(e)) = 4.0 * (barycentric[b] * barycentric_gradients.row(a) +
+                                                                 barycentric[a] * barycentric_gradients.row(b));
     }
 }
 

@@ -31,8 +31,7 @@ inline std::vector<Array3> SampleLocalPoints(GeometryFamily family) {
     switch (family) {
         case GeometryFamily::Point: return {Array3::Zero()};
         case GeometryFamily::Linear: return {Array3(-0.7, 0, 0), Array3(0.1, 0, 0), Array3(0.55, 0, 0)};
-        case GeometryFamily::Triangle:
-            return {Array3(0.2, 0.3, 0), Array3(0.6, 0.1, 0), Array3(0.05, 0.85, 0)};
+        case GeometryFamily::Triangle: return {Array3(0.2, 0.3, 0), Array3(0.6, 0.1, 0), Array3(0.05, 0.85, 0)};
         case GeometryFamily::Quadrilateral:
             return {Array3(-0.7, 0.2, 0), Array3(0.3, -0.4, 0), Array3(0.9, 0.85, 0)};
         case GeometryFamily::Tetrahedra:

@@ -126,10 +126,9 @@ TEST_P(EveryGeometry, IsInsideAcceptsInteriorPointsAndRejectsOutsidePoints) {
         EXPECT_TRUE(mGeometry->IsInside(mGeometry->GlobalCoordinates(xi), local));
         EXPECT_LT((local - xi).norm(), 1e-12);
     }
-    const Array3 outside =
-        mGeometry->LocalSpaceDimension() == 0
-            ? Array3((*mGeometry)[0].Coordinates() + Array3(1.0, 0.0, 0.0))
-            : mGeometry->GlobalCoordinates(testing::OutsideLocalPoint(mGeometry->Family()));
+    const Array3 outside = mGeometry->LocalSpaceDimension() == 0
+                               ? Array3((*mGeometry)[0].Coordinates() + Array3(1.0, 0.0, 0.0))
+                               : mGeometry->GlobalCoordinates(testing::OutsideLocalPoint(mGeometry->Family()));
     EXPECT_FALSE(mGeometry->IsInside(outside, local));
     EXPECT_FALSE(mGeometry->IsInside(Array3(40.0, -35.0, 50.0), local));
 }
@@ -171,8 +170,7 @@ TEST_P(EveryGeometry, CreateWithWrongNodeCountThrowsInputErrorNamingTypeAndCount
     ExpectThrowsContaining([&] { mGeometry->Create(MakeNodes(std::vector<Array3>(n + 1, Array3::Zero()))); },
                            {expected});
     ExpectThrowsContaining(
-        [&] { CreateGeometry(GetParam(), MakeNodes(std::vector<Array3>(n + 1, Array3::Zero()))); },
-        {expected});
+        [&] { CreateGeometry(GetParam(), MakeNodes(std::vector<Array3>(n + 1, Array3::Zero()))); }, {expected});
 }
 
 TEST_P(EveryGeometry, CreateReturnsTheSameTypeSharingTheNodes) {
@@ -200,9 +198,8 @@ TEST_P(EveryGeometry, FaceNormalsPointOutward) {
     const Array3 center = mGeometry->Center();
     const auto x = [&](std::size_t k) { return (*mGeometry)[k].Coordinates(); };
     // Surfaces: the edge normal is the tangent rotated clockwise about the surface normal (e_z in 2D).
-    const Array3 surface_normal = local_dim == 2
-                                      ? mGeometry->UnitNormal(SampleLocalPoints(mGeometry->Family()).front())
-                                      : Array3::Zero();
+    const Array3 surface_normal =
+        local_dim == 2 ? mGeometry->UnitNormal(SampleLocalPoints(mGeometry->Family()).front()) : Array3::Zero();
     for (const auto& face : faces) {
         const Array3 outward = local_dim == 2
                                    ? Array3((x(face[1]) - x(face[0])).cross(surface_normal))

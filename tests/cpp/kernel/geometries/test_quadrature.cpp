@@ -66,8 +66,7 @@ std::vector<Exponents> MonomialsOfDegree(int dimension, int degree) {
 double Quadrature(const std::vector<IntegrationPoint>& rule, const Exponents& e) {
     double sum = 0.0;
     for (const auto& p : rule)
-        sum +=
-            p.weight * std::pow(p.local[0], e[0]) * std::pow(p.local[1], e[1]) * std::pow(p.local[2], e[2]);
+        sum += p.weight * std::pow(p.local[0], e[0]) * std::pow(p.local[1], e[1]) * std::pow(p.local[2], e[2]);
     return sum;
 }
 
@@ -103,8 +102,7 @@ TEST_P(GaussRuleTest, FailsOnSomeMonomialOfClaimedDegreePlusOne) {
     double worst = 0.0;
     for (const Exponents& e : MonomialsOfDegree(Dimension(family), GaussRuleDegree(family, order) + 1))
         worst = std::max(worst, RelativeError(family, rule, e));
-    EXPECT_GT(worst, 1e-6)
-        << "the rule is exact one degree beyond its claim: the claimed degree is not tight";
+    EXPECT_GT(worst, 1e-6) << "the rule is exact one degree beyond its claim: the claimed degree is not tight";
 }
 
 TEST_P(GaussRuleTest, PointsLieStrictlyInsideReferenceElement) {
@@ -121,8 +119,7 @@ TEST_P(GaussRuleTest, PointsLieStrictlyInsideReferenceElement) {
                 break;
             default: EXPECT_LT(x.cwiseAbs().maxCoeff(), 1.0);
         }
-        for (int d = Dimension(family); d < 3; ++d)
-            EXPECT_EQ(x[d], 0.0) << "unused local components must be 0";
+        for (int d = Dimension(family); d < 3; ++d) EXPECT_EQ(x[d], 0.0) << "unused local components must be 0";
     }
 }
 
