@@ -61,6 +61,12 @@ public:
     Array3& FastGetSolutionStepValue(const Variable<Array3>& variable, std::size_t step = 0) {
         return *reinterpret_cast<Array3*>(StepPointer(variable, step));
     }
+    double FastGetSolutionStepValue(const Variable<double>& variable, std::size_t step = 0) const {
+        return *const_cast<Node*>(this)->StepPointer(variable, step);
+    }
+    const Array3& FastGetSolutionStepValue(const Variable<Array3>& variable, std::size_t step = 0) const {
+        return *reinterpret_cast<const Array3*>(const_cast<Node*>(this)->StepPointer(variable, step));
+    }
     /// As FastGetSolutionStepValue, with the step checked against the buffer size.
     /// @throws InputError for a missing variable or a step outside the buffer.
     template <class T>

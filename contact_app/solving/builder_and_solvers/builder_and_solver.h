@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "contact_app/kernel/model_part.h"
+#include "contact_app/solving/linear_solvers/linear_solver.h"
+#include "contact_app/solving/schemes/scheme.h"
+#include "contact_app/solving/system_types.h"
+
+namespace contact_app {
+
+/// Assembles and solves the global system (Kratos BuilderAndSolver). Owns the DoF set, the
+/// equation numbering and the sparsity graph: the graph is built once per DoF-set change and every
+/// Build scatters into the existing compressed matrix.
+///
+/// Derived classes decide the numbering and how Dirichlet DoFs are treated:
+/// BlockBuilderAndSolver keeps fixed DoFs in the system, EliminationBuilderAndSolver removes them.
+/// Master–slave constraints are applied through a global relation matrix T (A ← TᵀAT, b ← Tᵀb,
+/// Δx ← TΔx; ../shared/spec/kratos_structural.md §5.1).
+class BuilderAndSolver {
+public:
+    using Pointer = std::shared_ptr<BuilderAndSolver>;
+
+    /// @param linear_solver shared with the caller (not null)
+    explicit BuilderAndSolver(LinearSolver::Pointer linear_solver);
+    virtual ~BuilderAndSolver() = default;
+
+    /// Collects the DoFs of the assembled elements, conditions and constraints, sorted by
+    /// (node id, variable). @throws InputError if an entity lists a DoF its node does not have.
+    virtual void SetUpDofSet(Scheme& rScheme, ModelPart& rModelPart);
+    /// Numbers the equations (sets each DoF's equation id).
+    virtual void SetUpSystem(ModelPart& rModelPart) = 0;
+    /// Builds the sparsity graph and sizes A, Δx, b.
+    virtual void ResizeAndInitializeVectors(Scheme& rScheme, SparseMatrixType& rA, SystemVectorType& rDx,
+                                            SystemVectorType& rB, ModelPart& rModelPart);
+
+    /// Assembles A and b from every assembled element and condition.
+    virtual void Build(Scheme& rScheme, ModelPart& rModelPart, SparseMatrixType& rA, SystemVectorType& rB);
+    virtual void BuildLHS(Scheme& rScheme, ModelPart& rModelPart, SparseMatrixType& rA);
+    /// Assembles b only and zeroes its fixed-DoF entries (what residual criteria read).
+    virtual void BuildRHS(Scheme& rScheme, ModelPart& rModelPart, SystemVectorType& rB);
+    /// Applies the master–slave constraints of the model part (no-op without constraints).
+    virtual void ApplyConstraints(Scheme& rScheme, ModelPart& rModelPart, SparseMatrixType& rA, SystemVectorType& rB);
+    virtual void ApplyDirichletConditions(Scheme& rScheme, ModelPart& rModelPart, SparseMatrixType& rA,
+                                          SystemVectorType& rDx, SystemVectorType& rB) = 0;
+    /// Solves A Δx = b (Δx = 0 when ‖b‖ = 0).
+    virtual void SystemSolve(SparseMatrixType& rA, SystemVectorType& rDx, SystemVectorType& rB);
+    /// Build, constraints, Dirichlet, solve and, with constraints, Δx ← TΔx.
+    virtual void BuildAndSolve(Scheme& rScheme, ModelPart& rModelPart, SparseMatrixType& rA, SystemVectorType& rDx,
+                               SystemVectorType& rB);
+    /// Writes −(assembled residual) to the reaction variable of the DoFs the builder reports on.
+    virtual void CalculateReactions(Scheme& rScheme, ModelPart& rModelPart, SparseMatrixType& rA,
+                                    SystemVectorType& rDx, SystemVectorType& rB) = 0;
+
+    /// Called by strategies around each step; the base updates the constraint state.
+    virtual void InitializeSolutionStep(ModelPart& rModelPart, SparseMatrixType& rA, SystemVectorType& rDx,
+                                        SystemVectorType& rB);
+    virtual void FinalizeSolutionStep(ModelPart& rModelPart, SparseMatrixType& rA, SystemVectorType& rDx,
+                                      SystemVectorType& rB);
+    /// Drops the DoF set and graph (rebuilt by the next SetUpDofSet) and the solver's factorisation.
+    virtual void Clear();
+
+    DofsArrayType& GetDofSet() { return mDofSet; }
+    const DofsArrayType& GetDofSet() const { return mDofSet; }
+    /// Number of equations of the assembled system.
+    std::size_t GetEquationSystemSize() const { return mEquationSystemSize; }
+    bool GetDofSetIsInitializedFlag() const { return mDofSetIsInitialized; }
+    LinearSolver& GetLinearSolver() { return *mLinearSolver; }
+    /// Equation ids touched by a master–slave constraint (masters and slaves), for residual norms.
+    const std::vector<char>& ConstrainedEquations() const { return mConstrainedEquations; }
+    virtual std::string Info() const = 0;
+
+protected:
+    /// Adds a local system into the global one; ids ≥ the system size are skipped.
+    void Assemble(SparseMatrixType* pA, SystemVectorType* pB, const Matrix* pLHS, const Vector* pRHS,
+                  const EquationIdVectorType& rIds);
+    /// Assembles the full residual of every DoF id < @p size into @p rResidual (no Dirichlet, no constraints).
+    void AssembleResidual(Scheme& rScheme, ModelPart& rModelPart, SystemVectorType& rResidual, std::size_t size);
+
+    DofsArrayType mDofSet;
+    std::size_t mEquationSystemSize = 0;
+    bool mDofSetIsInitialized = false;
+
+private:
+    bool HasActiveConstraints(const ModelPart& rModelPart) const;
+    void BuildRelationMatrix(ModelPart& rModelPart);
+
+    LinearSolver::Pointer mLinearSolver;
+    SparseMatrixType mT;           // relation matrix of the last ApplyConstraints
+    bool mConstraintsApplied = false;
+    std::vector<char> mConstrainedEquations;
+    std::vector<char> mIsSlave;
+};
+
+}  // namespace contact_app

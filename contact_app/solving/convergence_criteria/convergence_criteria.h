@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "contact_app/kernel/model_part.h"
+#include "contact_app/solving/schemes/scheme.h"
+#include "contact_app/solving/system_types.h"
+
+namespace contact_app {
+
+class BuilderAndSolver;
+
+/// Decides when a Newton loop has converged (Kratos ConvergenceCriteria). PostCriteria runs
+/// after each update; criteria that need the residual at the updated state say so with
+/// GetActualizeRHSflag() and receive it rebuilt in @p rB.
+class ConvergenceCriteria {
+public:
+    using Pointer = std::shared_ptr<ConvergenceCriteria>;
+
+    virtual ~ConvergenceCriteria() = default;
+
+    virtual void Initialize(ModelPart& rModelPart) { mInitialized = true; }
+    /// Called once per step after the step's RHS was assembled (residual reference).
+    virtual void InitializeSolutionStep(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
+                                        const SystemVectorType& rDx, const SystemVectorType& rB,
+                                        const BuilderAndSolver& rBuilder);
+    virtual void FinalizeSolutionStep(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
+                                      const SystemVectorType& rDx, const SystemVectorType& rB) {}
+    virtual bool PreCriteria(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
+                             const SystemVectorType& rDx, const SystemVectorType& rB) {
+        return true;
+    }
+    /// @return true when converged. @param rB the rebuilt RHS when GetActualizeRHSflag() is true.
+    virtual bool PostCriteria(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
+                              const SystemVectorType& rDx, const SystemVectorType& rB,
+                              const BuilderAndSolver& rBuilder) = 0;
+    virtual bool GetActualizeRHSflag() const { return false; }
+    bool IsInitialized() const { return mInitialized; }
+    void SetEchoLevel(int level) { mEchoLevel = level; }
+    int GetEchoLevel() const { return mEchoLevel; }
+    /// One line with the last ratio and absolute norm(s), for the console table.
+    virtual std::string LastNorms() const = 0;
+    virtual std::string Info() const = 0;
+
+protected:
+    int mEchoLevel = 0;
+    bool mInitialized = false;
+};
+
+}  // namespace contact_app

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include "contact_app/solving/convergence_criteria/convergence_criteria.h"
+
+namespace contact_app {
+
+/// ‖Δx_free‖/‖x_free‖ ≤ relative tolerance or ‖Δx_free‖/√n_free < absolute tolerance
+/// (Kratos DisplacementCriteria, ../shared/spec/kratos_structural.md §6.1).
+class DisplacementCriteria : public ConvergenceCriteria {
+public:
+    DisplacementCriteria(double relative_tolerance, double absolute_tolerance);
+
+    bool PostCriteria(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
+                      const SystemVectorType& rDx, const SystemVectorType& rB, const BuilderAndSolver& rBuilder) override;
+    std::string LastNorms() const override;
+    std::string Info() const override { return "displacement_criterion"; }
+    double LastRatio() const { return mRatio; }
+    double LastAbsolute() const { return mAbsolute; }
+
+private:
+    double mRelativeTolerance;
+    double mAbsoluteTolerance;
+    double mRatio = 0.0;
+    double mAbsolute = 0.0;
+};
+
+}  // namespace contact_app

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "contact_app/solving/linear_solvers/linear_solver_factory.h"
+
+#include <algorithm>
+#include <memory>
+
+#include "contact_app/kernel/exceptions.h"
+#include "contact_app/kernel/string_utilities.h"
+#include "contact_app/solving/linear_solvers/direct_solver.h"
+#include "contact_app/solving/linear_solvers/iterative_solver.h"
+
+namespace contact_app {
+
+namespace {
+
+/// solver_type spelling -> our solver. Kratos module prefixes are stripped before the lookup.
+struct SolverNameRow {
+    const char* name;
+    const char* resolved;
+};
+
+constexpr SolverNameRow kSolverNames[] = {
+    {"umfpack", "umfpack"},
+    {"cholmod", "cholmod"},
+    {"klu", "klu"},
+    {"sparse_lu", "sparse_lu"},
+    {"eigen_sparse_lu", "sparse_lu"},
+    {"skyline_lu_factorization", "umfpack"},
+    {"SkylineLUFactorizationSolver", "umfpack"},
+    {"skyline_lu", "umfpack"},
+    {"super_lu", "umfpack"},
+    {"SuperLUSolver", "umfpack"},
+    {"Super_LU", "umfpack"},
+    {"superlu", "umfpack"},
+    {"pardiso_lu", "umfpack"},
+    {"pastix", "umfpack"},
+    {"sparse_qr", "umfpack"},
+    {"pardiso_llt", "cholmod"},
+    {"sparse_llt", "cholmod"},
+    {"cholmod_llt", "cholmod"},
+    {"cg", "cg"},
+    {"CGSolver", "cg"},
+    {"bicgstab", "bicgstab"},
+    {"BICGSTABSolver", "bicgstab"},
+    {"amgcl", "bicgstab"},
+    {"AMGCL", "bicgstab"},
+    {"gmres", "bicgstab"},
+};
+
+std::string StripModulePrefix(const std::string& name) {
+    const auto dot = name.rfind('.');
+    return dot == std::string::npos ? name : name.substr(dot + 1);
+}
+
+}  // namespace
+
+std::vector<std::string> RegisteredLinearSolverNames() {
+    std::vector<std::string> names;
+    for (const auto& row : kSolverNames) names.emplace_back(row.name);
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+std::string ResolveLinearSolverName(const std::string& solver_type) {
+    const std::string name = solver_type.empty() ? std::string("umfpack") : StripModulePrefix(solver_type);
+    for (const auto& row : kSolverNames)
+        if (name == row.name) return row.resolved;
+    const auto names = RegisteredLinearSolverNames();
+    CONTACT_THROW(InputError, "unknown linear solver \"", solver_type, "\"", "\n  expected: one of ", QuotedList(names),
+                  DidYouMean(name, names));
+}
+
+LinearSolver::Pointer CreateLinearSolver(const LinearSolverSettings& settings) {
+    const std::string resolved = ResolveLinearSolverName(settings.solver_type);
+    if (resolved == "umfpack") return std::make_shared<DirectSolver>(DirectSolverKind::UmfPack);
+    if (resolved == "cholmod") return std::make_shared<DirectSolver>(DirectSolverKind::Cholmod);
+    if (resolved == "klu") return std::make_shared<DirectSolver>(DirectSolverKind::Klu);
+    if (resolved == "sparse_lu") return std::make_shared<DirectSolver>(DirectSolverKind::SparseLU);
+    if (resolved == "cg")
+        return std::make_shared<IterativeSolver>(IterativeSolverKind::ConjugateGradient, settings.tolerance,
+                                                 settings.max_iteration);
+    return std::make_shared<IterativeSolver>(IterativeSolverKind::BiCGStab, settings.tolerance, settings.max_iteration);
+}
+
+}  // namespace contact_app

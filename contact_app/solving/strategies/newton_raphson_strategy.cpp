@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "contact_app/solving/strategies/newton_raphson_strategy.h"
+
+#include "contact_app/kernel/exceptions.h"
+#include "contact_app/kernel/variables.h"
+
+namespace contact_app {
+
+NewtonRaphsonStrategy::NewtonRaphsonStrategy(ModelPart& rModelPart, Scheme::Pointer scheme,
+                                             BuilderAndSolver::Pointer builder, ConvergenceCriteria::Pointer criteria,
+                                             int max_iterations, StrategySettings settings)
+    : SolvingStrategy(rModelPart, std::move(scheme), std::move(builder), settings),
+      mCriteria(std::move(criteria)),
+      mMaxIterations(max_iterations) {
+    CONTACT_CHECK(mCriteria != nullptr, InternalError, "Newton strategy created without a convergence criterion");
+    SetMaxIterationNumber(max_iterations);
+}
+
+void NewtonRaphsonStrategy::SetMaxIterationNumber(int max_iterations) {
+    CONTACT_CHECK(max_iterations >= 1, InputError, "max_iteration must be at least 1, got ", max_iterations);
+    mMaxIterations = max_iterations;
+}
+
+void NewtonRaphsonStrategy::Initialize() {
+    SolvingStrategy::Initialize();
+    if (!mCriteria->IsInitialized()) mCriteria->Initialize(mModelPart);
+}
+
+void NewtonRaphsonStrategy::InitializeSolutionStep() {
+    SolvingStrategy::InitializeSolutionStep();
+    // The residual reference is taken before Predict, as Kratos does.
+    if (mCriteria->GetActualizeRHSflag()) mBuilder->BuildRHS(*mScheme, mModelPart, mB);
+    mCriteria->InitializeSolutionStep(mModelPart, mBuilder->GetDofSet(), mA, mDx, mB, *mBuilder);
+}
+
+void NewtonRaphsonStrategy::UpdateSolution() {
+    mScheme->Update(mModelPart, mBuilder->GetDofSet(), mA, mDx, mB);
+    if (mSettings.move_mesh_flag) MoveMesh();
+}
+
+bool NewtonRaphsonStrategy::Iterate() {
+    ProcessInfo& info = mModelPart.GetProcessInfo();
+    info.SetValue(NL_ITERATION_NUMBER, mIterations);
+    mScheme->InitializeNonLinIteration(mModelPart, mA, mDx, mB);
+    const bool pre = mCriteria->PreCriteria(mModelPart, mBuilder->GetDofSet(), mA, mDx, mB);
+    mBuilder->BuildAndSolve(*mScheme, mModelPart, mA, mDx, mB);
+    UpdateSolution();
+    mScheme->FinalizeNonLinIteration(mModelPart, mA, mDx, mB);
+    if (!pre) return false;
+    if (mCriteria->GetActualizeRHSflag()) mBuilder->BuildRHS(*mScheme, mModelPart, mB);
+    const bool converged = mCriteria->PostCriteria(mModelPart, mBuilder->GetDofSet(), mA, mDx, mB, *mBuilder);
+    mHistory.push_back(mCriteria->LastNorms());
+    return converged;
+}
+
+bool NewtonRaphsonStrategy::SolveSolutionStep() {
+    mHistory.clear();
+    mIterations = 0;
+    bool converged = false;
+    while (!converged && mIterations < mMaxIterations) {
+        ++mIterations;
+        converged = Iterate();
+    }
+    mConverged = converged;
+    if (mSettings.compute_reactions) mBuilder->CalculateReactions(*mScheme, mModelPart, mA, mDx, mB);
+    return converged;
+}
+
+void NewtonRaphsonStrategy::FinalizeSolutionStep() {
+    SolvingStrategy::FinalizeSolutionStep();
+    mCriteria->FinalizeSolutionStep(mModelPart, mBuilder->GetDofSet(), mA, mDx, mB);
+}
+
+}  // namespace contact_app

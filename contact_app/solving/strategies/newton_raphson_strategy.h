@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <vector>
+
+#include "contact_app/solving/convergence_criteria/convergence_criteria.h"
+#include "contact_app/solving/strategies/solving_strategy.h"
+
+namespace contact_app {
+
+/// Full Newton–Raphson with the LHS rebuilt every iteration (Kratos
+/// ResidualBasedNewtonRaphsonStrategy, ../shared/spec/kratos_structural.md §6.4): at most
+/// max_iterations linear solves per step; a step that does not converge is reported
+/// (LastStepConverged() == false, the norms in IterationHistory()) and left as it is — the caller
+/// decides whether to go on (Kratos does) or to cut the step.
+class NewtonRaphsonStrategy : public SolvingStrategy {
+public:
+    /// @param criteria shared with the caller (not null) @param max_iterations ≥ 1
+    NewtonRaphsonStrategy(ModelPart& rModelPart, Scheme::Pointer scheme, BuilderAndSolver::Pointer builder,
+                          ConvergenceCriteria::Pointer criteria, int max_iterations = 10,
+                          StrategySettings settings = {});
+
+    void Initialize() override;
+    void InitializeSolutionStep() override;
+    bool SolveSolutionStep() override;
+    void FinalizeSolutionStep() override;
+
+    ConvergenceCriteria& GetConvergenceCriteria() { return *mCriteria; }
+    int GetMaxIterationNumber() const { return mMaxIterations; }
+    void SetMaxIterationNumber(int max_iterations);
+    /// One line per iteration of the last step: the criterion's norms.
+    const std::vector<std::string>& IterationHistory() const { return mHistory; }
+
+protected:
+    /// Updates the unknowns with Δx (line search overrides it).
+    virtual void UpdateSolution();
+    /// One Newton iteration: build, solve, update, move mesh, hooks. Returns the criterion's verdict.
+    bool Iterate();
+
+    ConvergenceCriteria::Pointer mCriteria;
+    int mMaxIterations;
+    std::vector<std::string> mHistory;
+};
+
+}  // namespace contact_app
