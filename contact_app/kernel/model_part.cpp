@@ -138,7 +138,7 @@ void ModelPart::CloneTimeStep(double new_time) {
 void ModelPart::CheckNewId(const char* kind, bool taken, IndexType id) const {
     CONTACT_CHECK(id >= 1, InputError, kind, " id ", id, " in model part ", FullName(), " is invalid",
                   "\n  expected: ids start at 1");
-    CONTACT_CHECK(!taken, InputError, "a ", kind, " with id ", id, " already exists in model part ",
+    CONTACT_CHECK(!taken, InputError, kind, " id ", id, " is already used in model part ",
                   GetRootModelPart().Name(), "\n  fix: ids must be unique per root model part");
 }
 

@@ -1,0 +1,145 @@
+"""Command line: ``contact-app info <file.mdpa>`` and ``contact-app run <parameters.json>``.
+
+Exit codes: 0 success; 1 a solve did not converge; 2 bad input or usage (the message starts with
+``error:``; no traceback unless ``--debug``); 3 an internal error (a bug in contact_app).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from collections import Counter
+from collections.abc import Callable, Sequence
+
+import contact_app as ca
+
+EXIT_OK = 0
+EXIT_NOT_CONVERGED = 1
+EXIT_INPUT_ERROR = 2
+EXIT_INTERNAL_ERROR = 3
+
+#: Historical variables the structural solver declares on the root model part "Structure".
+INFO_HISTORICAL_VARIABLES = (
+    "DISPLACEMENT",
+    "REACTION",
+    "VELOCITY",
+    "ACCELERATION",
+    "VOLUME_ACCELERATION",
+    "NORMAL",
+    "NODAL_H",
+)
+
+
+def count_entity_types(mdpa_path: str) -> dict[str, Counter[str]]:
+    """Count the entities of each ``Begin Elements <Name>`` and ``Begin Conditions <Name>`` block.
+
+    The model part does not keep the registered names of its entities, so they are taken from the
+    block headers of the file (which the reader has already validated).
+
+    Args:
+        mdpa_path: path of the .mdpa file, extension included.
+
+    Returns:
+        ``{"Elements": Counter(name -> count), "Conditions": Counter(name -> count)}``.
+
+    """
+    counts: dict[str, Counter[str]] = {"Elements": Counter(), "Conditions": Counter()}
+    block: tuple[str, str] | None = None
+    with open(mdpa_path, encoding="utf-8", errors="replace") as stream:
+        for raw_line in stream:
+            words = raw_line.split("//", 1)[0].split()
+            if not words:
+                continue
+            if block is None:
+                if len(words) >= 3 and words[0] == "Begin" and words[1] in counts:
+                    block = (words[1], words[2])
+            elif words[0] == "End":
+                block = None
+            else:
+                counts[block[0]][block[1]] += 1
+    return counts
+
+
+def _info(args: argparse.Namespace) -> int:
+    """Read an mdpa file into a fresh model and print its summary."""
+    start = time.perf_counter()
+    model = ca.Model()
+    model_part = model.CreateModelPart("Structure")
+    for name in INFO_HISTORICAL_VARIABLES:
+        model_part.AddNodalSolutionStepVariable(ca.get_variable(name))
+    reader = ca.ModelPartIO(args.mdpa)
+    reader.ReadModelPart(model_part)
+    elapsed = time.perf_counter() - start
+
+    print(model_part.Info(), end="")
+    for kind, counter in count_entity_types(reader.FileName()).items():
+        print(f"{kind.lower()} by type:" + ("" if counter else " none"))
+        for name, count in sorted(counter.items()):
+            print(f"  {name}: {count}")
+    print(f"read {reader.FileName()} in {elapsed:.3f} s")
+    return EXIT_OK
+
+
+def _run(args: argparse.Namespace) -> int:
+    """Report that the analysis driver is not available yet."""
+    print(
+        f"error: 'contact-app run {args.parameters}' is not available yet: the analysis driver "
+        "(contact_app.analysis) is not part of this build",
+        file=sys.stderr,
+    )
+    return EXIT_INPUT_ERROR
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """Build the argument parser of ``contact-app``."""
+    parser = argparse.ArgumentParser(
+        prog="contact-app", description="Finite-element mortar contact mechanics."
+    )
+    parser.add_argument("--debug", action="store_true", help="show tracebacks of errors")
+    debug = argparse.ArgumentParser(add_help=False)
+    debug.add_argument(
+        "--debug", action="store_true", default=argparse.SUPPRESS, help="show tracebacks of errors"
+    )
+    commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+
+    info = commands.add_parser(
+        "info", parents=[debug], help="read an .mdpa file and print its summary"
+    )
+    info.add_argument("mdpa", help="the .mdpa file (the extension may be omitted)")
+    info.set_defaults(handler=_info)
+
+    run = commands.add_parser(
+        "run", parents=[debug], help="run an analysis (ProjectParameters.json)"
+    )
+    run.add_argument("parameters", help="the ProjectParameters.json file")
+    run.set_defaults(handler=_run)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point of ``contact-app`` and ``python -m contact_app``.
+
+    Args:
+        argv: the arguments without the program name (default: ``sys.argv[1:]``).
+
+    Returns:
+        The exit code (see the module docstring).
+
+    """
+    args = build_parser().parse_args(argv)
+    handler: Callable[[argparse.Namespace], int] = args.handler
+    errors: tuple[tuple[type[BaseException], int], ...] = (
+        (ca.InputError, EXIT_INPUT_ERROR),
+        (ca.ConfigurationError, EXIT_INPUT_ERROR),
+        (OSError, EXIT_INPUT_ERROR),
+        (ca.ConvergenceError, EXIT_NOT_CONVERGED),
+        (ca.InternalError, EXIT_INTERNAL_ERROR),
+    )
+    try:
+        return handler(args)
+    except tuple(error for error, _ in errors) as error:
+        if args.debug:
+            raise
+        print(f"error: {error}", file=sys.stderr)
+        return next(code for kind, code in errors if isinstance(error, kind))

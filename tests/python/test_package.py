@@ -1,0 +1,38 @@
+"""The public package: exports, exception hierarchy and metadata."""
+
+from __future__ import annotations
+
+import pytest
+
+import contact_app as ca
+
+
+def test_package_all_lists_classes_functions_variables_and_flags() -> None:
+    assert {"Model", "ModelPart", "Node", "ModelPartIO", "VariableUtils", "get_variable"} <= set(
+        ca.__all__
+    )
+    assert {"DISPLACEMENT", "WEIGHTED_GAP", "ACTIVE", "SLIP"} <= set(ca.__all__)
+    assert len(ca.__all__) == len(set(ca.__all__))
+    for name in ca.__all__:
+        assert hasattr(ca, name), name
+
+
+def test_package_star_import_exports_variables() -> None:
+    namespace: dict[str, object] = {}
+    exec("from contact_app import *", namespace)
+    assert namespace["DISPLACEMENT_X"] == ca.DISPLACEMENT_X and namespace["ACTIVE"] == ca.ACTIVE
+
+
+def test_input_error_is_a_value_error() -> None:
+    assert issubclass(ca.InputError, ValueError)
+    with pytest.raises(ValueError, match="unknown element"):
+        ca.Model().CreateModelPart("X").CreateNewElement("NoSuchElement", 1, [1], None)
+
+
+@pytest.mark.parametrize(
+    "error", ["InputError", "ConfigurationError", "ConvergenceError", "InternalError"]
+)
+def test_exceptions_are_public_exception_classes(error: str) -> None:
+    cls = getattr(ca, error)
+    assert issubclass(cls, Exception)
+    assert cls.__module__ == "contact_app" and cls.__name__ == error
