@@ -20,5 +20,6 @@ void BindModelPart(py::module_& m);
 void BindIO(py::module_& m);
 void BindRegistry(py::module_& m);
 void BindUtilities(py::module_& m);
+void BindSolving(py::module_& m);
 
 }  // namespace contact_app::bindings

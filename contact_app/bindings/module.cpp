@@ -48,4 +48,5 @@ PYBIND11_MODULE(_core, m) {
     BindIO(m);
     BindRegistry(m);
     BindUtilities(m);
+    BindSolving(m);
 }

@@ -47,7 +47,12 @@ bool ResidualCriteria::PostCriteria(ModelPart&, DofsArrayType& rDofSet, const Sp
         mRatio = mAbsolute = 0.0;
         return true;
     }
-    mRatio = mInitialNorm < std::numeric_limits<double>::epsilon() ? 0.0 : norm / mInitialNorm;
+    // Kratos reports ratio 0 when the step-start residual vanishes, which declares convergence after one
+    // iteration even if the update created a residual (a prescribed displacement the geometry did not
+    // see yet). Without a reference the ratio is undefined: only the absolute test can pass then.
+    const double eps = std::numeric_limits<double>::epsilon();
+    if (mInitialNorm >= eps) mRatio = norm / mInitialNorm;
+    else mRatio = norm < eps ? 0.0 : std::numeric_limits<double>::infinity();
     mAbsolute = norm / static_cast<double>(count);
     return mRatio <= mRelativeTolerance || mAbsolute < mAbsoluteTolerance;
 }

@@ -15,25 +15,6 @@
 namespace contact_app {
 namespace {
 
-/// The reference meshes name structural elements and load conditions, which the structural
-/// layer registers. Until it is linked here, geometry-only stand-ins with the same names and
-/// geometries let the reader be tested on the real files (reading does not depend on physics).
-void RegisterStructuralStandIns() {
-    RegisterContactApplication();
-    const std::pair<const char*, const char*> elements[] = {{"SmallDisplacementElement2D4N", "Element2D4N"},
-                                                            {"SmallDisplacementElement3D8N", "Element3D8N"}};
-    for (const auto& [name, generic] : elements) {
-        auto& registry = Registry<Element>::Instance();
-        if (!registry.Has(name)) registry.Add(name, std::make_shared<Element>(registry.Get(generic)));
-    }
-    const std::pair<const char*, const char*> conditions[] = {{"LineLoadCondition2D2N", "LineCondition2D2N"},
-                                                              {"SurfaceLoadCondition3D4N", "SurfaceCondition3D4N"}};
-    for (const auto& [name, generic] : conditions) {
-        auto& registry = Registry<Condition>::Instance();
-        if (!registry.Has(name)) registry.Add(name, std::make_shared<Condition>(registry.Get(generic)));
-    }
-}
-
 ModelPart& NewStructure(Model& model) {
     ModelPart& part = model.CreateModelPart("Structure", 2);
     part.AddNodalSolutionStepVariable(DISPLACEMENT);
@@ -52,7 +33,7 @@ struct ReferenceCase {
 class ReferenceMeshTest : public ::testing::TestWithParam<ReferenceCase> {};
 
 TEST_P(ReferenceMeshTest, ReadsTheCountsOfTheFile) {
-    RegisterStructuralStandIns();
+    RegisterContactApplication();
     const ReferenceCase& reference = GetParam();
     Model model;
     ModelPart& part = NewStructure(model);

@@ -1,0 +1,186 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include "contact_app/bindings/bindings.h"
+#include "contact_app/solving/builder_and_solvers/block_builder_and_solver.h"
+#include "contact_app/solving/builder_and_solvers/elimination_builder_and_solver.h"
+#include "contact_app/solving/convergence_criteria/composite_criteria.h"
+#include "contact_app/solving/convergence_criteria/displacement_criteria.h"
+#include "contact_app/solving/convergence_criteria/residual_criteria.h"
+#include "contact_app/solving/linear_solvers/linear_solver_factory.h"
+#include "contact_app/solving/schemes/bossak_scheme.h"
+#include "contact_app/solving/strategies/line_search_strategy.h"
+
+namespace contact_app::bindings {
+
+namespace {
+
+void BindLinearSolvers(py::module_& m) {
+    py::class_<LinearSolver, LinearSolver::Pointer>(m, "LinearSolver", "Solver of the global linear system.")
+        .def("Info", &LinearSolver::Info, "The solver's own name (umfpack, cholmod, klu, sparse_lu, cg, bicgstab).")
+        .def("Clear", &LinearSolver::Clear, "Forgets the cached factorisation.")
+        .def("NumberOfSymbolicAnalyses", &LinearSolver::NumberOfSymbolicAnalyses,
+             "How often the sparsity pattern was analysed (pattern reuse diagnostic).");
+    m.def(
+        "CreateLinearSolver",
+        [](const std::string& solver_type, double tolerance, int max_iteration) {
+            return CreateLinearSolver({solver_type, tolerance, max_iteration});
+        },
+        py::arg("solver_type") = "", py::arg("tolerance") = 1.0e-6, py::arg("max_iteration") = 1000,
+        "Linear solver for a Kratos or contact_app solver_type name ('' = umfpack).");
+    m.def("registered_linear_solvers", &RegisteredLinearSolverNames, "Every accepted linear solver_type, sorted.");
+    m.def("ResolveLinearSolverName", &ResolveLinearSolverName, py::arg("solver_type"),
+          "The solver a solver_type name maps to.");
+}
+
+void BindSchemes(py::module_& m) {
+    // The base class is the static scheme; "Scheme" names the same class.
+    py::class_<Scheme, Scheme::Pointer>(m, "ResidualBasedIncrementalUpdateStaticScheme",
+                                        "Static scheme (base of all schemes): u += Δx on free DoFs.")
+        .def(py::init<>())
+        .def("Info", &Scheme::Info, "Scheme name.")
+        .def("Check", &Scheme::Check, py::arg("model_part"));
+    m.attr("Scheme") = m.attr("ResidualBasedIncrementalUpdateStaticScheme");
+    py::class_<BossakScheme, Scheme, BossakScheme::Pointer>(m, "ResidualBasedBossakDisplacementScheme",
+                                                            "Implicit Bossak–Newmark displacement scheme.")
+        .def(py::init<double, double>(), py::arg("damp_factor_m") = -0.3, py::arg("newmark_beta") = 0.25);
+    m.def(
+        "ResidualBasedNewmarkDisplacementScheme", []() { return std::make_shared<BossakScheme>(0.0, 0.25); },
+        "Newmark average-acceleration scheme (Bossak with damp_factor_m = 0).");
+}
+
+void BindBuilders(py::module_& m) {
+    py::class_<BuilderAndSolver, BuilderAndSolver::Pointer>(m, "BuilderAndSolver", "Global assembly and solve.")
+        .def("GetEquationSystemSize", &BuilderAndSolver::GetEquationSystemSize, "Number of equations.")
+        .def("Info", &BuilderAndSolver::Info, "block or elimination.")
+        .def(
+            "GetDofSet", [](BuilderAndSolver& self) { return self.GetDofSet(); }, py::return_value_policy::reference,
+            "The DoFs of the system, sorted by (node id, variable).");
+    py::class_<BlockBuilderAndSolver, BuilderAndSolver, std::shared_ptr<BlockBuilderAndSolver>>(
+        m, "ResidualBasedBlockBuilderAndSolver", "Builder keeping fixed DoFs in the system.")
+        .def(py::init<LinearSolver::Pointer>(), py::arg("linear_solver"));
+    py::class_<EliminationBuilderAndSolver, BuilderAndSolver, std::shared_ptr<EliminationBuilderAndSolver>>(
+        m, "ResidualBasedEliminationBuilderAndSolver", "Builder removing fixed DoFs from the system.")
+        .def(py::init<LinearSolver::Pointer>(), py::arg("linear_solver"));
+}
+
+void BindCriteria(py::module_& m) {
+    py::class_<ConvergenceCriteria, ConvergenceCriteria::Pointer>(m, "ConvergenceCriteria", "Newton convergence test.")
+        .def("SetEchoLevel", &ConvergenceCriteria::SetEchoLevel, py::arg("level"))
+        .def("LastNorms", &ConvergenceCriteria::LastNorms, "The norms of the last check, one line.")
+        .def("Info", &ConvergenceCriteria::Info, "Criterion name.");
+    py::class_<DisplacementCriteria, ConvergenceCriteria, std::shared_ptr<DisplacementCriteria>>(
+        m, "DisplacementCriteria", "Relative/absolute norm of the free DoF increment.")
+        .def(py::init<double, double>(), py::arg("relative_tolerance"), py::arg("absolute_tolerance"))
+        .def("LastRatio", &DisplacementCriteria::LastRatio)
+        .def("LastAbsolute", &DisplacementCriteria::LastAbsolute);
+    py::class_<ResidualCriteria, ConvergenceCriteria, std::shared_ptr<ResidualCriteria>>(
+        m, "ResidualCriteria", "Relative/absolute norm of the free, unconstrained residual.")
+        .def(py::init<double, double>(), py::arg("relative_tolerance"), py::arg("absolute_tolerance"))
+        .def("LastRatio", &ResidualCriteria::LastRatio)
+        .def("LastAbsolute", &ResidualCriteria::LastAbsolute);
+    py::class_<CompositeCriteria, ConvergenceCriteria, std::shared_ptr<CompositeCriteria>> composite(
+        m, "CompositeCriteria", "Two criteria combined with AND or OR.");
+    m.def(
+        "AndCriteria",
+        [](ConvergenceCriteria::Pointer a, ConvergenceCriteria::Pointer b) {
+            return std::make_shared<CompositeCriteria>(CompositeCriteria::Mode::And, a, b);
+        },
+        py::arg("first"), py::arg("second"), "Converged when both criteria are.");
+    m.def(
+        "OrCriteria",
+        [](ConvergenceCriteria::Pointer a, ConvergenceCriteria::Pointer b) {
+            return std::make_shared<CompositeCriteria>(CompositeCriteria::Mode::Or, a, b);
+        },
+        py::arg("first"), py::arg("second"), "Converged when either criterion is.");
+}
+
+StrategySettings Settings(bool compute_reactions, bool reform_step_dofs, bool move_mesh_flag) {
+    StrategySettings settings;
+    settings.compute_reactions = compute_reactions;
+    settings.reform_dofs_at_each_step = reform_step_dofs;
+    settings.move_mesh_flag = move_mesh_flag;
+    return settings;
+}
+
+void BindStrategies(py::module_& m) {
+    py::class_<SolvingStrategy, SolvingStrategy::Pointer>(m, "SolvingStrategy", "Implicit solving strategy.")
+        .def("Initialize", &SolvingStrategy::Initialize)
+        .def("InitializeSolutionStep", &SolvingStrategy::InitializeSolutionStep)
+        .def("Predict", &SolvingStrategy::Predict)
+        .def("SolveSolutionStep", &SolvingStrategy::SolveSolutionStep, "Returns whether the step converged.")
+        .def("FinalizeSolutionStep", &SolvingStrategy::FinalizeSolutionStep)
+        .def("Solve", &SolvingStrategy::Solve, "The four step calls in order; returns convergence.")
+        .def("Check", &SolvingStrategy::Check)
+        .def("Clear", &SolvingStrategy::Clear)
+        .def("MoveMesh", &SolvingStrategy::MoveMesh)
+        .def("SetEchoLevel", &SolvingStrategy::SetEchoLevel, py::arg("level"))
+        .def("GetIterationNumber", &SolvingStrategy::GetIterationNumber)
+        .def("IsConverged", &SolvingStrategy::LastStepConverged)
+        .def(
+            "GetBuilderAndSolver",
+            [](SolvingStrategy& self) { return &self.GetBuilderAndSolver(); }, py::return_value_policy::reference_internal)
+        .def(
+            "GetSystemVector", [](SolvingStrategy& self) { return Eigen::VectorXd(self.GetSystemVector()); },
+            "Copy of the last right-hand side.")
+        .def(
+            "GetSolutionVector", [](SolvingStrategy& self) { return Eigen::VectorXd(self.GetSolutionVector()); },
+            "Copy of the last increment Δx.");
+    m.def(
+        "ResidualBasedLinearStrategy",
+        [](ModelPart& part, Scheme::Pointer scheme, BuilderAndSolver::Pointer builder, bool compute_reactions,
+           bool reform_step_dofs, bool move_mesh_flag) {
+            return std::make_shared<SolvingStrategy>(part, scheme, builder,
+                                                     Settings(compute_reactions, reform_step_dofs, move_mesh_flag));
+        },
+        py::arg("model_part"), py::arg("scheme"), py::arg("builder_and_solver"), py::arg("compute_reactions") = true,
+        py::arg("reform_step_dofs") = false, py::arg("move_mesh_flag") = true, py::keep_alive<0, 1>(),
+        "One build, solve and update per step.");
+    py::class_<NewtonRaphsonStrategy, SolvingStrategy, std::shared_ptr<NewtonRaphsonStrategy>>(
+        m, "ResidualBasedNewtonRaphsonStrategy", "Full Newton–Raphson (LHS rebuilt every iteration).")
+        .def(py::init([](ModelPart& part, Scheme::Pointer scheme, ConvergenceCriteria::Pointer criteria,
+                         BuilderAndSolver::Pointer builder, int max_iteration, bool compute_reactions,
+                         bool reform_step_dofs, bool move_mesh_flag) {
+                 return std::make_shared<NewtonRaphsonStrategy>(
+                     part, scheme, builder, criteria, max_iteration,
+                     Settings(compute_reactions, reform_step_dofs, move_mesh_flag));
+             }),
+             py::arg("model_part"), py::arg("scheme"), py::arg("convergence_criterion"), py::arg("builder_and_solver"),
+             py::arg("max_iteration") = 10, py::arg("compute_reactions") = true, py::arg("reform_step_dofs") = false,
+             py::arg("move_mesh_flag") = true, py::keep_alive<1, 2>())
+        .def("GetMaxIterationNumber", &NewtonRaphsonStrategy::GetMaxIterationNumber)
+        .def("SetMaxIterationNumber", &NewtonRaphsonStrategy::SetMaxIterationNumber, py::arg("max_iteration"))
+        .def("IterationHistory", &NewtonRaphsonStrategy::IterationHistory, "Criterion norms per iteration of the last step.");
+    py::class_<LineSearchStrategy, NewtonRaphsonStrategy, std::shared_ptr<LineSearchStrategy>>(
+        m, "LineSearchStrategy", "Newton–Raphson with a secant line search.")
+        .def(py::init([](ModelPart& part, Scheme::Pointer scheme, ConvergenceCriteria::Pointer criteria,
+                         BuilderAndSolver::Pointer builder, int max_iteration, bool compute_reactions,
+                         bool reform_step_dofs, bool move_mesh_flag, int max_line_search_iterations,
+                         double first_alpha_value, double second_alpha_value, double min_alpha, double max_alpha,
+                         double line_search_tolerance) {
+                 LineSearchSettings line_search{max_line_search_iterations, first_alpha_value, second_alpha_value,
+                                                min_alpha, max_alpha, line_search_tolerance};
+                 return std::make_shared<LineSearchStrategy>(
+                     part, scheme, builder, criteria, max_iteration,
+                     Settings(compute_reactions, reform_step_dofs, move_mesh_flag), line_search);
+             }),
+             py::arg("model_part"), py::arg("scheme"), py::arg("convergence_criterion"), py::arg("builder_and_solver"),
+             py::arg("max_iteration") = 10, py::arg("compute_reactions") = true, py::arg("reform_step_dofs") = false,
+             py::arg("move_mesh_flag") = true, py::arg("max_line_search_iterations") = 5,
+             py::arg("first_alpha_value") = 0.5, py::arg("second_alpha_value") = 1.0, py::arg("min_alpha") = 0.1,
+             py::arg("max_alpha") = 2.0, py::arg("line_search_tolerance") = 0.5, py::keep_alive<1, 2>())
+        .def("LastAlpha", &LineSearchStrategy::LastAlpha);
+}
+
+}  // namespace
+
+void BindSolving(py::module_& m) {
+    BindLinearSolvers(m);
+    BindSchemes(m);
+    BindBuilders(m);
+    BindCriteria(m);
+    BindStrategies(m);
+}
+
+}  // namespace contact_app::bindings
