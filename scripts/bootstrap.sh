@@ -26,8 +26,14 @@ fi
 
 # Incremental C++ build (ccache + a persistent build/python directory): fast when nothing changed.
 start=$(date +%s)
-CMAKE_BUILD_PARALLEL_LEVEL=${CMAKE_BUILD_PARALLEL_LEVEL:-$(nproc)} \
-  "$python" -m pip install -q --no-build-isolation -e ".[test]" \
-  -Ccmake.define.CONTACT_APP_BUILD_TESTS=ON 2>&1 | grep -v "^$" || true
-"$python" -c "import contact_app" || { echo "bootstrap: the build failed (see above)"; exit 1; }
+log=build/bootstrap.log
+mkdir -p build
+if ! CMAKE_BUILD_PARALLEL_LEVEL=${CMAKE_BUILD_PARALLEL_LEVEL:-$(nproc)} \
+  "$python" -m pip install --no-build-isolation -e ".[test]" \
+  -Ccmake.define.CONTACT_APP_BUILD_TESTS=ON >"$log" 2>&1; then
+  grep -E "error|Error" "$log" | head -40
+  echo "bootstrap: the build failed; the full log is $log"
+  exit 1
+fi
+"$python" -c "import contact_app" || { echo "bootstrap: contact_app does not import (build log: $log)"; exit 1; }
 echo "bootstrap: build and install took $(( $(date +%s) - start )) s"

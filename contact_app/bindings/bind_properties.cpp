@@ -4,6 +4,9 @@
 
 #include "contact_app/bindings/binding_helpers.h"
 #include "contact_app/bindings/bindings.h"
+#include "contact_app/kernel/variables.h"
+#include "contact_app/kernel/registry.h"
+#include "contact_app/kernel/constitutive_law.h"
 #include "contact_app/kernel/process_info.h"
 #include "contact_app/kernel/properties.h"
 #include "contact_app/kernel/table.h"
@@ -36,13 +39,38 @@ void BindTable(py::module_& m) {
 
 }  // namespace
 
+void BindConstitutiveLaw(py::module_& m) {
+    py::class_<ConstitutiveLaw, std::shared_ptr<ConstitutiveLaw>>(m, "ConstitutiveLaw",
+                                                                  "A material law (Kratos ConstitutiveLaw).")
+        .def("Clone", &ConstitutiveLaw::Clone, "An independent copy.")
+        .def("WorkingSpaceDimension", &ConstitutiveLaw::WorkingSpaceDimension, "2 or 3.")
+        .def("GetStrainSize", &ConstitutiveLaw::GetStrainSize, "Number of Voigt strain components.")
+        .def("Info", &ConstitutiveLaw::Info, "The law's name.")
+        .def("__repr__", [](const ConstitutiveLaw& self) { return "<ConstitutiveLaw " + self.Info() + ">"; });
+    m.def(
+        "create_constitutive_law",
+        [](const std::string& name) { return Registry<ConstitutiveLaw>::Instance().Get(name).Clone(); },
+        py::arg("name"), "A new law of a registered name; InputError (with a suggestion) for an unknown name.");
+}
+
 void BindProperties(py::module_& m) {
     BindTable(m);
+    BindConstitutiveLaw(m);
 
     py::class_<Properties, std::shared_ptr<Properties>> properties(
         m, "Properties", "Material and condition parameters shared by entities (Kratos Properties).");
     properties.def(py::init<IndexType>(), py::arg("id"), "Stand-alone properties (use ModelPart.CreateNewProperties).")
         .def_property_readonly("Id", &Properties::Id, "Properties id.");
+    // The law overloads come first: the generic pointer-variable overload would otherwise refuse them.
+    using LawVariable = Variable<std::shared_ptr<ConstitutiveLaw>>;
+    auto set_law = [](Properties& self, const LawVariable& variable, std::shared_ptr<ConstitutiveLaw> law) {
+        self.SetValue(variable, std::move(law));
+    };
+    auto get_law = [](const Properties& self, const LawVariable& variable) { return self.GetValue(variable); };
+    properties.def("SetValue", set_law, py::arg("variable"), py::arg("value"), "Stores the constitutive law.")
+        .def("__setitem__", set_law, py::arg("variable"), py::arg("value"), "Stores the constitutive law.")
+        .def("GetValue", get_law, py::arg("variable"), "The constitutive law (None if unset).")
+        .def("__getitem__", get_law, py::arg("variable"), "The constitutive law (None if unset).");
     DefValueAccess(properties, true);
     properties
         .def("HasTable", &Properties::HasTable, py::arg("input_variable"), py::arg("output_variable"),

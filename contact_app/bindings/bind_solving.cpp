@@ -42,7 +42,7 @@ void BindSchemes(py::module_& m) {
         .def("Info", &Scheme::Info, "Scheme name.")
         .def("Check", &Scheme::Check, py::arg("model_part"));
     m.attr("Scheme") = m.attr("ResidualBasedIncrementalUpdateStaticScheme");
-    py::class_<BossakScheme, Scheme, BossakScheme::Pointer>(m, "ResidualBasedBossakDisplacementScheme",
+    py::class_<BossakScheme, Scheme, std::shared_ptr<BossakScheme>>(m, "ResidualBasedBossakDisplacementScheme",
                                                             "Implicit Bossak–Newmark displacement scheme.")
         .def(py::init<double, double>(), py::arg("damp_factor_m") = -0.3, py::arg("newmark_beta") = 0.25);
     m.def(

@@ -4,6 +4,8 @@
 
 #include "contact_app/bindings/binding_helpers.h"
 #include "contact_app/bindings/bindings.h"
+#include "contact_app/kernel/constitutive_law.h"
+#include "contact_app/kernel/variables.h"
 #include "contact_app/kernel/variable_registry.h"
 
 namespace contact_app::bindings {
@@ -45,6 +47,7 @@ py::object VariableObject(const VariableData& variable) {
         case VariableType::String:
             return Typed<std::string>(variable);
         case VariableType::Pointer:
+            if (variable == CONSTITUTIVE_LAW) return Typed<std::shared_ptr<ConstitutiveLaw>>(variable);
             break;
     }
     // Pointer variables: the polymorphic cast falls back to the registered base, VariableData.
@@ -92,6 +95,9 @@ void BindVariables(py::module_& m) {
     BindVariableClass<Vector>(m, "VectorVariable", "A vector variable (Kratos Variable<Vector>).");
     BindVariableClass<Matrix>(m, "MatrixVariable", "A matrix variable (Kratos Variable<Matrix>).");
     BindVariableClass<std::string>(m, "StringVariable", "A string variable (Kratos Variable<std::string>).");
+    py::class_<Variable<std::shared_ptr<ConstitutiveLaw>>, VariableData,
+               NoDelete<Variable<std::shared_ptr<ConstitutiveLaw>>>>(
+        m, "ConstitutiveLawVariable", "The CONSTITUTIVE_LAW variable (holds a law object in Properties).");
 
     const VariableRegistry& registry = VariableRegistry::Instance();
     for (std::size_t key = 0; key < registry.Size(); ++key) {

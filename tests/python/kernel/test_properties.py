@@ -40,13 +40,17 @@ def test_properties_wrong_value_type_raises_type_error(structure: ca.ModelPart) 
         properties[ca.TYING_VARIABLE] = 2.0
 
 
-def test_properties_pointer_variable_raises(structure: ca.ModelPart) -> None:
+def test_properties_hold_a_constitutive_law_and_refuse_other_pointers(structure: ca.ModelPart) -> None:
     properties = structure.CreateNewProperties(1)
     assert not properties.Has(ca.CONSTITUTIVE_LAW)
-    with pytest.raises(ca.InputError, match="CONSTITUTIVE_LAW of type Pointer .* cannot be read"):
-        properties.GetValue(ca.CONSTITUTIVE_LAW)
+    assert properties.GetValue(ca.CONSTITUTIVE_LAW) is None
+    properties[ca.CONSTITUTIVE_LAW] = ca.create_constitutive_law("LinearElastic3DLaw")
+    assert properties.Has(ca.CONSTITUTIVE_LAW)
+    assert properties[ca.CONSTITUTIVE_LAW].GetStrainSize() == 6
+    with pytest.raises(ca.InputError, match="INDEX_MAP of type Pointer .* cannot be read"):
+        properties.GetValue(ca.INDEX_MAP)
     with pytest.raises(ca.InputError, match=r"holds a C\+\+ object"):
-        properties[ca.CONSTITUTIVE_LAW]
+        properties[ca.INDEX_MAP]
 
 
 def test_get_properties_creates_missing_ones_like_kratos(structure: ca.ModelPart) -> None:

@@ -19,7 +19,8 @@ import contact_app as ca
         ("CAUCHY_STRESS_VECTOR", ca.VectorVariable, "Vector"),
         ("CONSTITUTIVE_MATRIX", ca.MatrixVariable, "Matrix"),
         ("TYING_VARIABLE", ca.StringVariable, "String"),
-        ("CONSTITUTIVE_LAW", ca.VariableData, "Pointer"),
+        ("CONSTITUTIVE_LAW", ca.ConstitutiveLawVariable, "Pointer"),
+        ("INDEX_MAP", ca.VariableData, "Pointer"),
     ],
 )
 def test_variable_attribute_has_its_class_and_type(name: str, cls: type, type_name: str) -> None:
