@@ -100,9 +100,7 @@ def test_model_part_remove_node_from_sub_model_parts(rectangle: ca.ModelPart) ->
 
 
 def test_model_part_duplicate_node_id_raises(rectangle: ca.ModelPart) -> None:
-    with pytest.raises(
-        ca.InputError, match="node id 3 is already used in model part Structure"
-    ):
+    with pytest.raises(ca.InputError, match="node id 3 is already used in model part Structure"):
         rectangle.CreateNewNode(3, 9.0, 9.0, 9.0)
     with pytest.raises(ca.InputError, match="node id 3 is already used"):
         rectangle.CreateSubModelPart("Sub").CreateNewNode(3, 9.0, 9.0, 9.0)

@@ -40,7 +40,9 @@ def test_properties_wrong_value_type_raises_type_error(structure: ca.ModelPart) 
         properties[ca.TYING_VARIABLE] = 2.0
 
 
-def test_properties_hold_a_constitutive_law_and_refuse_other_pointers(structure: ca.ModelPart) -> None:
+def test_properties_hold_a_constitutive_law_and_refuse_other_pointers(
+    structure: ca.ModelPart,
+) -> None:
     properties = structure.CreateNewProperties(1)
     assert not properties.Has(ca.CONSTITUTIVE_LAW)
     assert properties.GetValue(ca.CONSTITUTIVE_LAW) is None

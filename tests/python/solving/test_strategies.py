@@ -7,7 +7,7 @@ import contact_app as ca
 
 
 def _plate(model: ca.Model, law: str = "LinearElasticPlaneStress2DLaw") -> ca.ModelPart:
-    """A 2 x 1 plate of 4 x 2 distorted bilinear quads (E = 200, nu = 0.3, t = 1)."""
+    """Build a 2 x 1 plate of 4 x 2 distorted bilinear quads (E = 200, nu = 0.3, t = 1)."""
     mp = model.CreateModelPart("Structure", 2)
     for variable in (ca.DISPLACEMENT, ca.REACTION, ca.VOLUME_ACCELERATION):
         mp.AddNodalSolutionStepVariable(variable)
@@ -36,13 +36,17 @@ def _plate(model: ca.Model, law: str = "LinearElasticPlaneStress2DLaw") -> ca.Mo
     return mp
 
 
-def _newton(mp: ca.ModelPart, builder: str = "block", max_iteration: int = 10) -> ca.SolvingStrategy:
+def _newton(
+    mp: ca.ModelPart, builder: str = "block", max_iteration: int = 10
+) -> ca.SolvingStrategy:
     solver = ca.CreateLinearSolver("skyline_lu_factorization")
     if builder == "block":
         builder_and_solver = ca.ResidualBasedBlockBuilderAndSolver(solver)
     else:
         builder_and_solver = ca.ResidualBasedEliminationBuilderAndSolver(solver)
-    criterion = ca.OrCriteria(ca.ResidualCriteria(1e-10, 1e-14), ca.DisplacementCriteria(1e-10, 1e-14))
+    criterion = ca.OrCriteria(
+        ca.ResidualCriteria(1e-10, 1e-14), ca.DisplacementCriteria(1e-10, 1e-14)
+    )
     scheme = ca.ResidualBasedIncrementalUpdateStaticScheme()
     return ca.ResidualBasedNewtonRaphsonStrategy(
         mp, scheme, criterion, builder_and_solver, max_iteration=max_iteration
