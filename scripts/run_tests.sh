@@ -7,5 +7,7 @@ bash scripts/bootstrap.sh
 python=${PYTHON:-python3}
 echo "== C++ unit tests (ctest) =="
 ctest --test-dir build/python --output-on-failure -j "$(nproc)"
+echo "== Python lint (ruff) =="
+"$python" -m ruff check contact_app tests/python
 echo "== Python tests (pytest) =="
 "$python" -m pytest tests/python "$@"
