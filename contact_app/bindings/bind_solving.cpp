@@ -55,6 +55,20 @@ void BindBuilders(py::module_& m) {
         .def("GetEquationSystemSize", &BuilderAndSolver::GetEquationSystemSize, "Number of equations.")
         .def("Info", &BuilderAndSolver::Info, "block or elimination.")
         .def(
+            "GetTimings",
+            [](const BuilderAndSolver& self) {
+                const auto& t = self.Timings();
+                py::dict timings;
+                timings["setup"] = t.setup;
+                timings["build"] = t.build;
+                timings["solve"] = t.solve;
+                timings["builds"] = t.builds;
+                timings["solves"] = t.solves;
+                return timings;
+            },
+            "Seconds spent in setup (DoFs, graph), build (assembly) and solve, and the call counts.")
+        .def("ResetTimings", &BuilderAndSolver::ResetTimings)
+        .def(
             "GetDofSet", [](BuilderAndSolver& self) { return self.GetDofSet(); }, py::return_value_policy::reference,
             "The DoFs of the system, sorted by (node id, variable).");
     py::class_<BlockBuilderAndSolver, BuilderAndSolver, std::shared_ptr<BlockBuilderAndSolver>>(

@@ -2,12 +2,26 @@
 #include "contact_app/solving/builder_and_solvers/builder_and_solver.h"
 
 #include <algorithm>
+#include <chrono>
 
 #include "contact_app/kernel/exceptions.h"
 
 namespace contact_app {
 
 namespace {
+
+/// Adds the lifetime of the object to a seconds counter.
+class ScopedTimer {
+public:
+    explicit ScopedTimer(double& total) : mTotal(total), mStart(std::chrono::steady_clock::now()) {}
+    ~ScopedTimer() { mTotal += std::chrono::duration<double>(std::chrono::steady_clock::now() - mStart).count(); }
+    ScopedTimer(const ScopedTimer&) = delete;
+    ScopedTimer& operator=(const ScopedTimer&) = delete;
+
+private:
+    double& mTotal;
+    std::chrono::steady_clock::time_point mStart;
+};
 
 bool DofLess(const Dof* a, const Dof* b) {
     if (a->Id() != b->Id()) return a->Id() < b->Id();
@@ -30,6 +44,7 @@ BuilderAndSolver::BuilderAndSolver(LinearSolver::Pointer linear_solver) : mLinea
 }
 
 void BuilderAndSolver::SetUpDofSet(Scheme&, ModelPart& rModelPart) {
+    ScopedTimer timer(mTimings.setup);
     const ProcessInfo& info = rModelPart.GetProcessInfo();
     DofsArrayType dofs, slaves, masters;
     ForEachAssembled(rModelPart, [&](auto& entity) {
@@ -50,6 +65,7 @@ void BuilderAndSolver::SetUpDofSet(Scheme&, ModelPart& rModelPart) {
 
 void BuilderAndSolver::ResizeAndInitializeVectors(Scheme& rScheme, SparseMatrixType& rA, SystemVectorType& rDx,
                                                   SystemVectorType& rB, ModelPart& rModelPart) {
+    ScopedTimer timer(mTimings.setup);
     const auto size = static_cast<int>(mEquationSystemSize);
     const ProcessInfo& info = rModelPart.GetProcessInfo();
     // Column lists of the graph; every equation keeps its diagonal so Dirichlet rows stay solvable.
@@ -111,6 +127,8 @@ void BuilderAndSolver::Assemble(SparseMatrixType* pA, SystemVectorType* pB, cons
 }
 
 void BuilderAndSolver::Build(Scheme& rScheme, ModelPart& rModelPart, SparseMatrixType& rA, SystemVectorType& rB) {
+    ScopedTimer timer(mTimings.build);
+    ++mTimings.builds;
     std::fill(rA.valuePtr(), rA.valuePtr() + rA.nonZeros(), 0.0);
     rB.setZero(static_cast<Eigen::Index>(mEquationSystemSize));
     const ProcessInfo& info = rModelPart.GetProcessInfo();
@@ -148,6 +166,7 @@ void BuilderAndSolver::AssembleResidual(Scheme& rScheme, ModelPart& rModelPart, 
 }
 
 void BuilderAndSolver::BuildRHS(Scheme& rScheme, ModelPart& rModelPart, SystemVectorType& rB) {
+    ScopedTimer timer(mTimings.build);
     AssembleResidual(rScheme, rModelPart, rB, mEquationSystemSize);
     for (const Dof* dof : mDofSet)
         if (dof->IsFixed() && dof->EquationId() < mEquationSystemSize) rB[static_cast<Eigen::Index>(dof->EquationId())] = 0.0;
@@ -210,6 +229,8 @@ void BuilderAndSolver::ApplyConstraints(Scheme&, ModelPart& rModelPart, SparseMa
 }
 
 void BuilderAndSolver::SystemSolve(SparseMatrixType& rA, SystemVectorType& rDx, SystemVectorType& rB) {
+    ScopedTimer timer(mTimings.solve);
+    ++mTimings.solves;
     if (rB.size() == 0 || rB.norm() == 0.0) {
         rDx.setZero(rB.size());
         return;

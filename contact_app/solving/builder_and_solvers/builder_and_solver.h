@@ -11,6 +11,15 @@
 
 namespace contact_app {
 
+/// Wall-clock seconds spent in each phase since construction (or ResetTimings).
+struct BuilderAndSolverTimings {
+    double setup = 0.0;   ///< DoF set, numbering and sparsity graph
+    double build = 0.0;   ///< assembly of A and b (BuildRHS included)
+    double solve = 0.0;   ///< the linear solves
+    std::size_t builds = 0;
+    std::size_t solves = 0;
+};
+
 /// Assembles and solves the global system (Kratos BuilderAndSolver). Owns the DoF set, the
 /// equation numbering and the sparsity graph: the graph is built once per DoF-set change and every
 /// Build scatters into the existing compressed matrix.
@@ -71,6 +80,8 @@ public:
     /// Equation ids touched by a master–slave constraint (masters and slaves), for residual norms.
     const std::vector<char>& ConstrainedEquations() const { return mConstrainedEquations; }
     virtual std::string Info() const = 0;
+    const BuilderAndSolverTimings& Timings() const { return mTimings; }
+    void ResetTimings() { mTimings = {}; }
 
 protected:
     /// Adds a local system into the global one; ids ≥ the system size are skipped.
@@ -80,6 +91,7 @@ protected:
     void AssembleResidual(Scheme& rScheme, ModelPart& rModelPart, SystemVectorType& rResidual, std::size_t size);
 
     DofsArrayType mDofSet;
+    BuilderAndSolverTimings mTimings;
     std::size_t mEquationSystemSize = 0;
     bool mDofSetIsInitialized = false;
 

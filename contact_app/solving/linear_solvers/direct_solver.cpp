@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "contact_app/solving/linear_solvers/direct_solver.h"
 
+#include <string>
+#include <type_traits>
 #include <variant>
 
 #include <Eigen/CholmodSupport>
@@ -12,8 +14,16 @@
 
 namespace contact_app {
 
+namespace {
+// UMFPACK runs on 64-bit indices (umfpack_dl): the 32-bit variant cannot address more than 2^31
+// words of factor memory and fails on 3D problems of ~10^5 unknowns.
+using LongIndexMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, long>;
+using UmfPackSolver = Eigen::UmfPackLU<LongIndexMatrix>;
+}  // namespace
+
 struct DirectSolver::Backend {
-    std::variant<Eigen::UmfPackLU<SparseMatrixType>, Eigen::CholmodSupernodalLLT<SparseMatrixType>,
+    LongIndexMatrix long_index_copy;
+    std::variant<UmfPackSolver, Eigen::CholmodSupernodalLLT<SparseMatrixType>,
                  Eigen::KLU<SparseMatrixType>, Eigen::SparseLU<SparseMatrixType, Eigen::COLAMDOrdering<int>>>
         solver;
 
@@ -71,13 +81,25 @@ void DirectSolver::Solve(SparseMatrixType& rA, SystemVectorType& rX, SystemVecto
     }
     std::visit(
         [&](auto& solver) {
-            if (analyse) solver.analyzePattern(rA);
-            solver.factorize(rA);
-            CONTACT_CHECK(solver.info() == Eigen::Success, ConvergenceError, Info(),
-                          ": the factorisation of the ", rA.rows(), "x", rA.cols(),
-                          " system failed (singular or, for cholmod, not positive definite)",
-                          "\n  fix: check the boundary conditions (rigid-body modes) and, for an indefinite or",
-                          " unsymmetric system, use an LU solver such as \"umfpack\"");
+            using TSolver = std::decay_t<decltype(solver)>;
+            if constexpr (std::is_same_v<TSolver, UmfPackSolver>) {
+                mBackend->long_index_copy = rA;
+                if (analyse) solver.analyzePattern(mBackend->long_index_copy);
+                solver.factorize(mBackend->long_index_copy);
+            } else {
+                if (analyse) solver.analyzePattern(rA);
+                solver.factorize(rA);
+            }
+            if (solver.info() != Eigen::Success) {
+                std::string detail;
+                if constexpr (std::is_same_v<TSolver, UmfPackSolver>)
+                    detail = " (UMFPACK status " + std::to_string(solver.umfpackFactorizeReturncode()) +
+                             (solver.umfpackFactorizeReturncode() == 1 ? ": singular matrix)" : ")");
+                CONTACT_THROW(ConvergenceError, Info(), ": the factorisation of the ", rA.rows(), "x", rA.cols(),
+                              " system failed", detail, " (singular or, for cholmod, not positive definite)",
+                              "\n  fix: check the boundary conditions (rigid-body modes) and, for an indefinite or",
+                              " unsymmetric system, use an LU solver such as \"umfpack\"");
+            }
             rX = solver.solve(rB);
             CONTACT_CHECK(solver.info() == Eigen::Success && rX.allFinite(), ConvergenceError, Info(),
                           ": the solve produced non-finite values (the matrix is numerically singular)");
