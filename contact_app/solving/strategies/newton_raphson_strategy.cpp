@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "contact_app/solving/strategies/newton_raphson_strategy.h"
 
+#include <iostream>
+
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/variables.h"
 
@@ -50,6 +52,7 @@ bool NewtonRaphsonStrategy::Iterate() {
     if (mCriteria->GetActualizeRHSflag()) mBuilder->BuildRHS(*mScheme, mModelPart, mB);
     const bool converged = mCriteria->PostCriteria(mModelPart, mBuilder->GetDofSet(), mA, mDx, mB, *mBuilder);
     mHistory.push_back(mCriteria->LastNorms());
+    if (mSettings.echo_level >= 2) std::cout << "  Newton iteration " << mIterations << ": " << mHistory.back() << "\n";
     return converged;
 }
 
@@ -62,6 +65,10 @@ bool NewtonRaphsonStrategy::SolveSolutionStep() {
         converged = Iterate();
     }
     mConverged = converged;
+    if (mSettings.echo_level >= 1) {
+        std::cout << "  Newton: " << (converged ? "converged in " : "NOT converged after ") << mIterations
+                  << " iteration(s)" << (mHistory.empty() ? "" : "; " + mHistory.back()) << "\n";
+    }
     if (mSettings.compute_reactions) mBuilder->CalculateReactions(*mScheme, mModelPart, mA, mDx, mB);
     return converged;
 }

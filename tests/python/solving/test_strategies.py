@@ -122,3 +122,21 @@ def test_bossak_scheme_checks_its_parameters() -> None:
     with pytest.raises(ca.InputError, match="damp_factor_m"):
         ca.ResidualBasedBossakDisplacementScheme(-0.8)
     assert ca.ResidualBasedNewmarkDisplacementScheme().Info() == "newmark"
+
+
+def test_strategy_echo_prints_the_iterations(capfd: pytest.CaptureFixture[str]) -> None:
+    model = ca.Model()
+    mp = _plate(model)
+    for node in mp.Nodes:
+        if node.X0 == 0.0:
+            node.Fix(ca.DISPLACEMENT_X)
+            node.Fix(ca.DISPLACEMENT_Y)
+        if node.X0 == 2.0:
+            node.Fix(ca.DISPLACEMENT_X)
+            node.SetSolutionStepValue(ca.DISPLACEMENT_X, 0, 1.0e-3)
+    strategy = _newton(mp)
+    strategy.SetEchoLevel(2)
+    assert strategy.Solve()
+    output = capfd.readouterr().out
+    assert "Newton iteration 1: res ratio" in output
+    assert "Newton: converged in" in output
