@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "contact_app/kernel/data_value_container.h"
+#include "contact_app/kernel/data_value_holder.h"
 #include "contact_app/kernel/dof.h"
 #include "contact_app/kernel/flags.h"
 #include "contact_app/kernel/geometries/geometry.h"
@@ -19,7 +19,7 @@ namespace contact_app {
 /// The base implementation contributes nothing (a "mesh" entity): empty DoF list, 0×0 local
 /// system. @tparam TDerived Element or Condition, the type Create() returns.
 template <class TDerived>
-class Entity : public Flags {
+class Entity : public Flags, public DataValueHolder {
 public:
     using Pointer = std::shared_ptr<TDerived>;
     using GeometryType = Geometry;
@@ -45,14 +45,6 @@ public:
     Properties& GetProperties() const;
     const Properties::Pointer& pGetProperties() const { return mProperties; }
     void SetProperties(Properties::Pointer properties) { mProperties = std::move(properties); }
-
-    template <class T>
-    T GetValue(const Variable<T>& variable) const { return mData.GetValue(variable); }
-    template <class T>
-    void SetValue(const Variable<T>& variable, const T& value) { mData.SetValue(variable, value); }
-    bool Has(const VariableData& variable) const { return mData.Has(variable); }
-    DataValueContainer& Data() { return mData; }
-    const DataValueContainer& Data() const { return mData; }
 
     // -- Life cycle --
     virtual void Initialize(const ProcessInfo& rCurrentProcessInfo);
@@ -102,7 +94,6 @@ private:
     IndexType mId;
     Geometry::Pointer mGeometry;
     Properties::Pointer mProperties;
-    DataValueContainer mData;
 };
 
 }  // namespace contact_app

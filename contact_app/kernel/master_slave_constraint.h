@@ -4,7 +4,7 @@
 #include <memory>
 #include <string>
 
-#include "contact_app/kernel/data_value_container.h"
+#include "contact_app/kernel/data_value_holder.h"
 #include "contact_app/kernel/dof.h"
 #include "contact_app/kernel/flags.h"
 #include "contact_app/kernel/process_info.h"
@@ -15,7 +15,7 @@ namespace contact_app {
 /// A multipoint constraint u_slave = T · u_master + c (Kratos MasterSlaveConstraint).
 /// The base class stores the DoF lists; derived classes supply T and c in CalculateLocalSystem
 /// and may rebuild them in the life-cycle hooks (the contact MPC constraint does).
-class MasterSlaveConstraint : public Flags {
+class MasterSlaveConstraint : public Flags, public DataValueHolder {
 public:
     using Pointer = std::shared_ptr<MasterSlaveConstraint>;
 
@@ -31,12 +31,6 @@ public:
 
     IndexType Id() const { return mId; }
     void SetId(IndexType id) { mId = id; }
-
-    template <class T>
-    T GetValue(const Variable<T>& variable) const { return mData.GetValue(variable); }
-    template <class T>
-    void SetValue(const Variable<T>& variable, const T& value) { mData.SetValue(variable, value); }
-    bool Has(const VariableData& variable) const { return mData.Has(variable); }
 
     virtual void Initialize(const ProcessInfo& rCurrentProcessInfo);
     virtual void InitializeSolutionStep(const ProcessInfo& rCurrentProcessInfo);
@@ -69,7 +63,6 @@ private:
     IndexType mId;
     DofsVectorType mMasterDofs;
     DofsVectorType mSlaveDofs;
-    DataValueContainer mData;
 };
 
 }  // namespace contact_app

@@ -25,7 +25,7 @@ class Model;
 /// the ProcessInfo. A sub model part holds a subset of its parent's entities (shared pointers)
 /// and shares the root's layout and ProcessInfo. Anything added to a sub model part is added
 /// to all its ancestors. Ids are unique per root.
-class ModelPart : public Flags {
+class ModelPart : public Flags, public DataValueHolder {
 public:
     using NodesContainerType = EntityContainer<Node>;
     using ElementsContainerType = EntityContainer<Element>;
@@ -166,13 +166,7 @@ public:
     ProcessInfo& GetProcessInfo() { return *mProcessInfo; }
     const ProcessInfo& GetProcessInfo() const { return *mProcessInfo; }
     const ProcessInfo::Pointer& pGetProcessInfo() const { return mProcessInfo; }
-    /// Model-part values (Begin ModelPartData / SubModelPartData).
-    template <class T>
-    T GetValue(const Variable<T>& variable) const { return mData.GetValue(variable); }
-    template <class T>
-    void SetValue(const Variable<T>& variable, const T& value) { mData.SetValue(variable, value); }
-    bool Has(const VariableData& variable) const { return mData.Has(variable); }
-    DataValueContainer& Data() { return mData; }
+    // Model-part values (Begin ModelPartData / SubModelPartData) come from DataValueHolder.
 
     /// Multi-line summary: counts per container and the sub model part tree.
     std::string Info(const std::string& indent = "") const;
@@ -195,7 +189,6 @@ private:
     PropertiesContainerType mProperties;
     std::map<IndexType, Geometry::Pointer> mGeometries;
     std::map<IndexType, std::shared_ptr<Table>> mTables;
-    DataValueContainer mData;
     // Shared with the whole hierarchy (set by the root).
     ProcessInfo::Pointer mProcessInfo;
     VariablesList::Pointer mVariables;

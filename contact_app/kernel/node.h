@@ -4,7 +4,7 @@
 #include <memory>
 #include <vector>
 
-#include "contact_app/kernel/data_value_container.h"
+#include "contact_app/kernel/data_value_holder.h"
 #include "contact_app/kernel/dof.h"
 #include "contact_app/kernel/flags.h"
 #include "contact_app/kernel/types.h"
@@ -18,7 +18,7 @@ namespace contact_app {
 /// Historical data is one contiguous block of `buffer_size × VariablesList::DataSize()` doubles,
 /// used as a ring: step 0 is the current step, step 1 the previous one, and so on.
 /// CloneSolutionStep() moves the ring by one step and copies the old current values forward.
-class Node : public Flags {
+class Node : public Flags, public DataValueHolder {
 public:
     using Pointer = std::shared_ptr<Node>;
 
@@ -82,18 +82,6 @@ public:
     /// Shifts the ring by one step: the old step 0 becomes step 1 and is copied into the new step 0.
     void CloneSolutionStep();
 
-    // -- Non-historical data --
-
-    template <class T>
-    T GetValue(const Variable<T>& variable) const { return mData.GetValue(variable); }
-    template <class T>
-    T& GetOrCreateValue(const Variable<T>& variable) { return mData.GetOrCreate(variable); }
-    template <class T>
-    void SetValue(const Variable<T>& variable, const T& value) { mData.SetValue(variable, value); }
-    bool Has(const VariableData& variable) const { return mData.Has(variable); }
-    DataValueContainer& Data() { return mData; }
-    const DataValueContainer& Data() const { return mData; }
-
     // -- Degrees of freedom --
 
     /// Adds (or returns the existing) DoF of @p variable; sets its reaction variable if given.
@@ -135,7 +123,6 @@ private:
     std::size_t mStride = 0;       // doubles per step block as allocated
     std::size_t mBufferSize = 1;
     std::size_t mCurrentStep = 0;  // ring position of step 0
-    DataValueContainer mData;
     std::vector<std::unique_ptr<Dof>> mDofs;
 };
 

@@ -5,14 +5,14 @@
 #include <memory>
 #include <utility>
 
-#include "contact_app/kernel/data_value_container.h"
+#include "contact_app/kernel/data_value_holder.h"
 #include "contact_app/kernel/table.h"
 
 namespace contact_app {
 
 /// Material and condition parameters shared by entities (Kratos Properties): values by
 /// variable plus tables keyed by (input variable, output variable).
-class Properties {
+class Properties : public DataValueHolder {
 public:
     using Pointer = std::shared_ptr<Properties>;
 
@@ -20,19 +20,12 @@ public:
 
     IndexType Id() const { return mId; }
 
-    template <class T>
-    T GetValue(const Variable<T>& variable) const { return mData.GetValue(variable); }
-    template <class T>
-    void SetValue(const Variable<T>& variable, const T& value) { mData.SetValue(variable, value); }
-    bool Has(const VariableData& variable) const { return mData.Has(variable); }
     /// The value, or an InputError saying which property set lacks which variable.
     template <class T>
     T GetChecked(const Variable<T>& variable) const {
-        if (!mData.Has(variable)) ThrowMissing(variable);
-        return mData.GetValue(variable);
+        if (!Has(variable)) ThrowMissing(variable);
+        return GetValue(variable);
     }
-    DataValueContainer& Data() { return mData; }
-    const DataValueContainer& Data() const { return mData; }
 
     void SetTable(const VariableData& input, const VariableData& output, Table table);
     bool HasTable(const VariableData& input, const VariableData& output) const;
@@ -44,7 +37,6 @@ private:
     [[noreturn]] void ThrowMissing(const VariableData& variable) const;
 
     IndexType mId;
-    DataValueContainer mData;
     std::map<std::pair<std::size_t, std::size_t>, Table> mTables;
 };
 

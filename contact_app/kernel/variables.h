@@ -10,6 +10,7 @@ namespace contact_app {
 
 class ConstitutiveLaw;
 class MasterSlaveConstraint;
+class TableStreamUtility;
 
 // Kernel (Kratos core) and structural (Kratos StructuralMechanicsApplication) variables, with their
 // Kratos names and types (../shared/spec/variables.md §2). One table declares and defines them.
@@ -35,7 +36,8 @@ class MasterSlaveConstraint;
     X(Matrix, ALMANSI_STRAIN_TENSOR) X(Matrix, DEFORMATION_GRADIENT) X(Matrix, CONSTITUTIVE_MATRIX) \
     X(std::string, IDENTIFIER)                                                                    \
     X(std::shared_ptr<ConstitutiveLaw>, CONSTITUTIVE_LAW)                                        \
-    X(std::shared_ptr<MasterSlaveConstraint>, MASTER_SLAVE_CONSTRAINT)
+    X(std::shared_ptr<MasterSlaveConstraint>, MASTER_SLAVE_CONSTRAINT)                             \
+    X(std::shared_ptr<TableStreamUtility>, TABLE_UTILITY)
 
 /// 3-vector variables, each with its _X, _Y, _Z components: X(NAME).
 #define CONTACT_APP_KERNEL_ARRAY3_VARIABLES(X)                                                   \
