@@ -7,6 +7,7 @@
 #include "contact_app/solving/builder_and_solvers/elimination_builder_and_solver.h"
 #include "contact_app/solving/convergence_criteria/composite_criteria.h"
 #include "contact_app/solving/convergence_criteria/displacement_criteria.h"
+#include "contact_app/solving/convergence_criteria/mixed_generic_criteria.h"
 #include "contact_app/solving/convergence_criteria/residual_criteria.h"
 #include "contact_app/solving/linear_solvers/linear_solver_factory.h"
 #include "contact_app/solving/schemes/bossak_scheme.h"
@@ -94,6 +95,16 @@ void BindCriteria(py::module_& m) {
         .def(py::init<double, double>(), py::arg("relative_tolerance"), py::arg("absolute_tolerance"))
         .def("LastRatio", &ResidualCriteria::LastRatio)
         .def("LastAbsolute", &ResidualCriteria::LastAbsolute);
+    py::class_<MixedGenericCriteria, ConvergenceCriteria, std::shared_ptr<MixedGenericCriteria>>(
+        m, "MixedGenericCriteria", "Increment criterion with (relative, absolute) tolerances per variable.")
+        .def(py::init([](const std::vector<std::tuple<const VariableData*, double, double>>& list) {
+                 std::vector<MixedGenericCriteria::Entry> entries;
+                 for (const auto& [variable, relative, absolute] : list) entries.push_back({variable, relative, absolute});
+                 return std::make_shared<MixedGenericCriteria>(entries);
+             }),
+             py::arg("tolerances"), "tolerances: list of (variable, relative_tolerance, absolute_tolerance).")
+        .def("LastRatio", &MixedGenericCriteria::LastRatio, py::arg("group"))
+        .def("LastAbsolute", &MixedGenericCriteria::LastAbsolute, py::arg("group"));
     py::class_<CompositeCriteria, ConvergenceCriteria, std::shared_ptr<CompositeCriteria>> composite(
         m, "CompositeCriteria", "Two criteria combined with AND or OR.");
     m.def(

@@ -8,6 +8,7 @@
 #include "contact_app/solving/builder_and_solvers/elimination_builder_and_solver.h"
 #include "contact_app/solving/convergence_criteria/composite_criteria.h"
 #include "contact_app/solving/convergence_criteria/displacement_criteria.h"
+#include "contact_app/solving/convergence_criteria/mixed_generic_criteria.h"
 #include "contact_app/solving/convergence_criteria/residual_criteria.h"
 #include "contact_app/solving/linear_solvers/linear_solver_factory.h"
 #include "contact_app/solving/schemes/bossak_scheme.h"
@@ -199,6 +200,41 @@ TEST(BossakScheme, BossakDampsHighFrequenciesToTheSpectralRadiusAtInfinity) {
     EXPECT_LT(peak_late, 1.0);
     EXPECT_GT(peak_late, 0.9);
     EXPECT_THROW(BossakScheme(-0.7), InputError);
+}
+
+}  // namespace
+}  // namespace contact_app
+
+namespace contact_app {
+namespace {
+
+TEST(MixedGenericCriteria, EachVariableMeetsItsOwnTolerance) {
+    Model model;
+    ModelPart& part = testing::MakeLine(model, 2);
+    testing::AddSprings(part, 1.0, 1.0);
+    part.AddElement(std::make_shared<testing::OscillatorElement>(
+        100, CreateGeometry("Point3D", {part.pGetNode(2)}), 0.0, 0.0, 10.0));
+    part.GetNode(1).Fix(DISPLACEMENT_X);
+    auto tight = std::make_shared<MixedGenericCriteria>(
+        std::vector<MixedGenericCriteria::Entry>{{&DISPLACEMENT, 1e-12, 1e-16}});
+    NewtonRaphsonStrategy strategy(part, std::make_shared<Scheme>(), MakeBuilder(true), tight, 30);
+    EXPECT_TRUE(strategy.Solve());
+    EXPECT_NEAR(part.GetNode(2).FastGetSolutionStepValue(DISPLACEMENT_X), 2.0, 1e-12);
+    EXPECT_LE(tight->LastRatio(0), 1e-12);
+    EXPECT_NE(tight->LastNorms().find("DISPLACEMENT ratio"), std::string::npos);
+    // A loose tolerance on the only variable stops after the first iteration.
+    Model other;
+    ModelPart& second = testing::MakeLine(other, 2);
+    testing::AddSprings(second, 1.0, 1.0);
+    second.AddElement(std::make_shared<testing::OscillatorElement>(
+        100, CreateGeometry("Point3D", {second.pGetNode(2)}), 0.0, 0.0, 10.0));
+    second.GetNode(1).Fix(DISPLACEMENT_X);
+    auto loose = std::make_shared<MixedGenericCriteria>(
+        std::vector<MixedGenericCriteria::Entry>{{&DISPLACEMENT, 10.0, 0.0}});
+    NewtonRaphsonStrategy quick(second, std::make_shared<Scheme>(), MakeBuilder(true), loose, 30);
+    EXPECT_TRUE(quick.Solve());
+    EXPECT_EQ(quick.GetIterationNumber(), 1);
+    EXPECT_THROW(MixedGenericCriteria({}), InputError);
 }
 
 }  // namespace
