@@ -1,0 +1,199 @@
+"""``json_output_process``.
+
+Write nodal (and integration-point) results over time to a JSON file in the layout
+``from_json_check_result_process`` reads (see ``_json_results``).
+
+Keys: ``output_variables`` ([]), ``gauss_points_output_variables`` ([]), ``output_file_name``
+(required), ``model_part_name`` (required), ``sub_model_part_name`` (""), ``check_for_flag`` (""
+= every node; else only nodes — and elements — with that flag; other times get ``null``),
+``time_frequency`` (1.0), ``historical_value`` (true), ``resultant_solution`` (false: true writes
+the sum over the nodes under ``"RESULTANT"`` instead of one entry per node),
+``use_node_coordinates`` (false: true keys nodes by their initial coordinates).
+
+``ExecuteBeforeSolutionLoop`` writes the empty skeleton; at the end of a step DELTA_TIME is added to
+a counter and only when it **strictly exceeds** ``time_frequency`` is it reset and TIME plus the
+values appended and the whole file rewritten.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .. import _core
+from .._core import InputError, Model
+from ..model_part_lookup import get_model_part
+from ..parameters import Parameters
+from ._json_results import (
+    element_key,
+    gauss_columns,
+    gauss_values,
+    nodal_columns,
+    nodal_value,
+    node_key,
+)
+from ._utilities import check_historical, get_flag, validate
+from .process import Process
+
+DEFAULTS = {
+    "output_variables": [],
+    "gauss_points_output_variables": [],
+    "output_file_name": "",
+    "model_part_name": "",
+    "sub_model_part_name": "",
+    "check_for_flag": "",
+    "time_frequency": 1.0,
+    "historical_value": True,
+    "resultant_solution": False,
+    "use_node_coordinates": False,
+}
+
+
+def Factory(settings: Parameters, model: Model) -> Process:
+    """Create the process from its descriptor (``settings["Parameters"]`` configures it)."""
+    return JsonOutputProcess(model, settings["Parameters"])
+
+
+class JsonOutputProcess(Process):
+    """Append results to a JSON file at the end of the steps ``time_frequency`` selects.
+
+    Args:
+        model: the model holding the model part.
+        settings: the ``Parameters`` block.
+
+    Raises:
+        InputError: unknown key, model part, variable or flag; a variable the solver does not store
+            historically while ``historical_value`` is true; an output file name that is empty.
+    """
+
+    def __init__(self, model: Model, settings: Parameters) -> None:
+        validate(settings, DEFAULTS, ("output_file_name", "model_part_name"), "json_output_process")
+        model_part = get_model_part(
+            model, settings["model_part_name"].GetString(), settings.Where("model_part_name")
+        )
+        sub_name = settings["sub_model_part_name"].GetString()
+        if sub_name:
+            model_part = get_model_part(
+                model, f"{model_part.FullName()}.{sub_name}", settings.Where("sub_model_part_name")
+            )
+        self.model_part = model_part
+        self.output_file_name = settings["output_file_name"].GetString()
+        if not self.output_file_name:
+            raise InputError(
+                f"output_file_name is empty\n  where:    {settings.Where('output_file_name')}\n"
+                '  fix:      name the file, e.g. "case_results.json"'
+            )
+        self.historical = settings["historical_value"].GetBool()
+        where = settings.Where("output_variables")
+        self.columns = nodal_columns(settings["output_variables"].GetStringArray(), where)
+        if self.historical:
+            for column in self.columns:
+                check_historical(model_part, column.variable, where)
+        self.gauss_columns = gauss_columns(
+            settings["gauss_points_output_variables"].GetStringArray(),
+            settings.Where("gauss_points_output_variables"),
+        )
+        flag_name = settings["check_for_flag"].GetString()
+        self.flag = get_flag(flag_name, settings.Where("check_for_flag")) if flag_name else None
+        self.time_frequency = settings["time_frequency"].GetDouble()
+        self.resultant_solution = settings["resultant_solution"].GetBool()
+        self.use_node_coordinates = settings["use_node_coordinates"].GetBool()
+        self.data: dict[str, Any] | None = None
+        self._time_counter = 0.0
+
+    def ExecuteBeforeSolutionLoop(self) -> None:
+        """Write the skeleton (TIME and one empty list per entity and column)."""
+        self._skeleton()
+        self._write()
+
+    def ExecuteFinalizeSolutionStep(self) -> None:
+        """Append this step if the time since the last output exceeds ``time_frequency``."""
+        process_info = self.model_part.ProcessInfo
+        self._time_counter += process_info[_core.DELTA_TIME]
+        if self._time_counter > self.time_frequency:
+            self._time_counter = 0.0
+            self.append(process_info[_core.TIME])
+
+    def append(self, time: float) -> None:
+        """Append TIME and the current values and rewrite the file."""
+        data = self._skeleton()
+        data["TIME"].append(float(time))
+        count = len(data["TIME"])
+        nodes = [n for n in self.model_part.Nodes if self._selected(n)]
+        if self.resultant_solution:
+            resultant = data["RESULTANT"]
+            for column in self.columns:
+                values = [np.asarray(nodal_value(n, column, self.historical)) for n in nodes]
+                total = np.sum(values, axis=0) if values else 0.0
+                resultant[column.name].append(_plain(total))
+        else:
+            for node in nodes:
+                entry = data.setdefault(node_key(node, self.use_node_coordinates), {})
+                for column in self.columns:
+                    series = entry.setdefault(column.name, [None] * (count - 1))
+                    series.append(nodal_value(node, column, self.historical))
+        if self.gauss_columns:
+            process_info = self.model_part.ProcessInfo
+            for element in self.model_part.Elements:
+                if not self._selected(element):
+                    continue
+                entry = data.setdefault(element_key(element), {})
+                values = gauss_values(element, self.gauss_columns, process_info)
+                for column in self.gauss_columns:
+                    per_point = entry.setdefault(column.name, {})
+                    for point, value in enumerate(values[column.name]):
+                        per_point.setdefault(str(point), [None] * (count - 1)).append(value)
+        _pad(data, count)
+        self._write()
+
+    # -- helpers --
+
+    def _selected(self, entity: Any) -> bool:
+        return self.flag is None or entity.Is(self.flag)
+
+    def _skeleton(self) -> dict[str, Any]:
+        if self.data is not None:
+            return self.data
+        data: dict[str, Any] = {"TIME": []}
+        if self.resultant_solution:
+            data["RESULTANT"] = {column.name: [] for column in self.columns}
+        elif self.columns:
+            for node in self.model_part.Nodes:
+                if self._selected(node):
+                    key = node_key(node, self.use_node_coordinates)
+                    data[key] = {column.name: [] for column in self.columns}
+        if self.gauss_columns:
+            for element in self.model_part.Elements:
+                if self._selected(element):
+                    data[element_key(element)] = {column.name: {} for column in self.gauss_columns}
+        self.data = data
+        return data
+
+    def _write(self) -> None:
+        path = Path(self.output_file_name)
+        if path.parent != Path():
+            path.parent.mkdir(parents=True, exist_ok=True)
+        temporary = path.with_name(path.name + ".tmp")
+        with open(temporary, "w", encoding="utf-8") as stream:
+            json.dump(self.data, stream)
+        os.replace(temporary, path)
+
+
+def _plain(value: Any) -> float | list[float]:
+    array = np.asarray(value, dtype=float)
+    return float(array) if array.ndim == 0 else [float(v) for v in array.ravel()]
+
+
+def _pad(tree: dict[str, Any], count: int) -> None:
+    """Append null to every series shorter than TIME (entities not written at this time)."""
+    for key, value in tree.items():
+        if key == "TIME":
+            continue
+        if isinstance(value, dict):
+            _pad(value, count)
+        elif isinstance(value, list) and len(value) < count:
+            value.extend([None] * (count - len(value)))
