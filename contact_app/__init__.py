@@ -160,3 +160,7 @@ def _export_registered_names() -> list[str]:
 
 
 __all__ += _export_registered_names()
+
+from . import analysis  # noqa: E402  (needs the names above: it imports contact_app itself)
+
+__all__ += ["analysis"]

@@ -1,12 +1,16 @@
 """Command line: ``contact-app info <file.mdpa>`` and ``contact-app run <parameters.json>``.
 
-Exit codes: 0 success; 1 a solve did not converge; 2 bad input or usage (the message starts with
-``error:``; no traceback unless ``--debug``); 3 an internal error (a bug in contact_app).
+Exit codes: 0 success (unconverged steps are warned about and the run goes on, as in Kratos);
+1 a step did not converge with ``--stop-on-non-convergence``, or a result check
+(``from_json_check_result_process``) failed; 2 bad input or usage (the message starts with
+``error:``; no traceback unless ``--debug``); 3 an internal error (a bug in contact_app);
+130 interrupted (Ctrl-C).
 """
 
 from __future__ import annotations
 
 import argparse
+import logging
 import sys
 import time
 from collections import Counter
@@ -18,6 +22,7 @@ EXIT_OK = 0
 EXIT_NOT_CONVERGED = 1
 EXIT_INPUT_ERROR = 2
 EXIT_INTERNAL_ERROR = 3
+EXIT_INTERRUPTED = 130
 
 #: Historical variables the structural solver declares on the root model part "Structure".
 INFO_HISTORICAL_VARIABLES = (
@@ -81,14 +86,43 @@ def _info(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+class _WarningFormatter(logging.Formatter):
+    """``warning: <message>`` lines for the console."""
+
+    def format(self, record: logging.LogRecord) -> str:
+        return f"{record.levelname.lower()}: {record.getMessage()}"
+
+
+def _install_console_logging() -> logging.Handler:
+    handler = logging.StreamHandler(sys.stderr)
+    handler.setFormatter(_WarningFormatter())
+    handler.setLevel(logging.WARNING)
+    logger = logging.getLogger("contact_app")
+    logger.addHandler(handler)
+    return handler
+
+
 def _run(args: argparse.Namespace) -> int:
-    """Report that the analysis driver is not available yet."""
-    print(
-        f"error: 'contact-app run {args.parameters}' is not available yet: the analysis driver "
-        "(contact_app.analysis) is not part of this build",
-        file=sys.stderr,
-    )
-    return EXIT_INPUT_ERROR
+    """Run the analysis of a ProjectParameters.json."""
+    handler = _install_console_logging()
+    try:
+        ca.analysis.run(
+            args.parameters,
+            stop_on_non_convergence=args.stop_on_non_convergence,
+            quiet=args.quiet,
+        )
+    finally:
+        logging.getLogger("contact_app").removeHandler(handler)
+    return EXIT_OK
+
+
+def _result_check_error() -> type[BaseException]:
+    """The error class of from_json_check_result_process (AssertionError before it exists)."""
+    try:
+        from contact_app.processes.from_json_check_result_process import ResultCheckError
+    except ImportError:
+        return AssertionError
+    return ResultCheckError
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -112,7 +146,18 @@ def build_parser() -> argparse.ArgumentParser:
     run = commands.add_parser(
         "run", parents=[debug], help="run an analysis (ProjectParameters.json)"
     )
-    run.add_argument("parameters", help="the ProjectParameters.json file")
+    run.add_argument(
+        "parameters",
+        help="the ProjectParameters.json file; relative paths inside it resolve against the "
+        "working directory, then against the file's own folder",
+    )
+    run.add_argument(
+        "--stop-on-non-convergence",
+        action="store_true",
+        help="stop with exit code 1 at the first step that does not converge (default: warn and "
+        "go on, as Kratos does); the outputs end at the last converged step",
+    )
+    run.add_argument("--quiet", action="store_true", help="no per-step table and summary")
     run.set_defaults(handler=_run)
     return parser
 
@@ -138,8 +183,27 @@ def main(argv: Sequence[str] | None = None) -> int:
     )
     try:
         return handler(args)
+    except KeyboardInterrupt:
+        if args.debug:
+            raise
+        print("interrupted (Ctrl-C)", file=sys.stderr)
+        return EXIT_INTERRUPTED
+    except _result_check_error() as error:
+        if args.debug:
+            raise
+        print(f"result check failed: {error}", file=sys.stderr)
+        return EXIT_NOT_CONVERGED
     except tuple(error for error, _ in errors) as error:
         if args.debug:
             raise
         print(f"error: {error}", file=sys.stderr)
         return next(code for kind, code in errors if isinstance(error, kind))
+    except Exception as error:  # a bug: say so in one paragraph unless --debug
+        if args.debug:
+            raise
+        print(
+            f"internal error (a bug in contact_app; please report it): {type(error).__name__}: "
+            f"{error}\n  fix:      rerun with --debug for the traceback",
+            file=sys.stderr,
+        )
+        return EXIT_INTERNAL_ERROR

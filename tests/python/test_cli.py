@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+import json
 import os
 import shutil
 import subprocess
 import sys
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -139,11 +142,6 @@ def test_cli_debug_reraises(malformed_mdpa: Path, argv: list[str]) -> None:
         cli.main([*argv, str(malformed_mdpa)])
 
 
-def test_cli_run_is_not_available_yet(capsys: pytest.CaptureFixture[str]) -> None:
-    assert cli.main(["run", "ProjectParameters.json"]) == 2
-    assert "not available yet" in capsys.readouterr().err
-
-
 def test_cli_without_command_is_a_usage_error() -> None:
     with pytest.raises(SystemExit) as exit_info:
         cli.main([])
@@ -154,3 +152,335 @@ def test_cli_count_entity_types_ignores_comments_and_sub_model_parts(small_mdpa:
     counts = cli.count_entity_types(str(small_mdpa))
     assert counts["Elements"] == {"Element2D4N": 2}
     assert counts["Conditions"] == {"LineCondition2D2N": 2, "PointCondition2D1N": 1}
+
+
+# -- contact-app run: bad inputs --
+
+CASE_DATA = Path(__file__).parent / "analysis" / "data"
+PARAMETERS = "plate_static_parameters.json"
+
+
+def _edit_json(case: Path, name: str, edit: Callable[[dict[str, Any]], Any]) -> None:
+    data = json.loads((case / name).read_text())
+    edit(data)
+    (case / name).write_text(json.dumps(data, indent=4))
+
+
+def _solver(edit: Callable[[dict[str, Any]], Any]) -> Callable[[Path], None]:
+    return lambda case: _edit_json(case, PARAMETERS, lambda p: edit(p["solver_settings"]))
+
+
+def _params(edit: Callable[[dict[str, Any]], Any]) -> Callable[[Path], None]:
+    return lambda case: _edit_json(case, PARAMETERS, edit)
+
+
+def _material(edit: Callable[[dict[str, Any]], Any]) -> Callable[[Path], None]:
+    return lambda case: _edit_json(
+        case, "plate_materials.json", lambda m: edit(m["properties"][0]["Material"])
+    )
+
+
+def _constraint(edit: Callable[[dict[str, Any]], Any]) -> Callable[[Path], None]:
+    return _params(lambda p: edit(p["processes"]["constraints_process_list"][0]))
+
+
+def _load(edit: Callable[[dict[str, Any]], Any]) -> Callable[[Path], None]:
+    return _params(lambda p: edit(p["processes"]["loads_process_list"][0]["Parameters"]))
+
+
+def _malformed(case: Path) -> None:
+    text = (case / PARAMETERS).read_text().replace('"plate_static",', '"plate_static"', 1)
+    (case / PARAMETERS).write_text(text)
+
+
+def _bad_element(case: Path) -> None:
+    text = (case / "plate.mdpa").read_text()
+    (case / "plate.mdpa").write_text(
+        text.replace("SmallDisplacementElement2D4N", "SmallDisplacement2D4N")
+    )
+
+
+INJECTION = "__import__('os').system('touch pwned')"
+
+BAD_INPUTS: list[tuple[str, Callable[[Path], None], str]] = [
+    ("malformed_json", _malformed, "malformed JSON in plate_static_parameters.json"),
+    ("unknown_top_level_key", _params(lambda p: p.update(proceses={})), 'did you mean "processes"'),
+    (
+        "unknown_solver_key",
+        _solver(lambda s: s.update(max_iterations=5)),
+        'unknown key "max_iterations"',
+    ),
+    (
+        "unknown_linear_solver_key",
+        _solver(lambda s: s["linear_solver_settings"].update(solvertype="x")),
+        'did you mean "solver_type"',
+    ),
+    (
+        "unknown_time_stepping_key",
+        _solver(lambda s: s["time_stepping"].update(timestep=1.0)),
+        'did you mean "time_step"',
+    ),
+    (
+        "wrong_type",
+        _solver(lambda s: s.update(max_iteration="10")),
+        '"max_iteration" has the wrong type',
+    ),
+    (
+        "missing_domain_size",
+        _solver(lambda s: s.pop("domain_size")),
+        'missing required key "domain_size"',
+    ),
+    (
+        "missing_input_filename",
+        _solver(lambda s: s["model_import_settings"].pop("input_filename")),
+        'missing required key "input_filename"',
+    ),
+    (
+        "missing_mdpa",
+        _solver(lambda s: s["model_import_settings"].update(input_filename="nothing")),
+        'mdpa file "nothing.mdpa" not found',
+    ),
+    (
+        "missing_materials",
+        _solver(lambda s: s["material_import_settings"].update(materials_filename="none.json")),
+        'materials file "none.json" not found',
+    ),
+    (
+        "unknown_law",
+        _material(lambda m: m["constitutive_law"].update(name="LinearElasticPlaneStrain2DLow")),
+        'did you mean "LinearElasticPlaneStrain2DLaw"',
+    ),
+    (
+        "unknown_material_variable",
+        _material(lambda m: m["Variables"].update(YOUNGS_MODULUS=1.0)),
+        'unknown variable "YOUNGS_MODULUS"',
+    ),
+    (
+        "wrong_material_value",
+        _material(lambda m: m["Variables"].update(POISSON_RATIO="0.3")),
+        "wrong type: found a string",
+    ),
+    (
+        "unknown_process_module",
+        _constraint(lambda c: c.update(python_module="assign_vector_variable_proces")),
+        'did you mean "assign_vector_variable_process"',
+    ),
+    (
+        "unknown_kratos_module",
+        _constraint(
+            lambda c: c.update(kratos_module="KratosMultiphysics.FluidDynamicsApplication")
+        ),
+        'unknown kratos_module "KratosMultiphysics.FluidDynamicsApplication"',
+    ),
+    (
+        "missing_python_module",
+        _constraint(lambda c: c.pop("python_module")),
+        'missing required key "python_module"',
+    ),
+    ("bad_function", _load(lambda p: p.update(modulus="2.0*t+")), "is not a valid expression"),
+    ("injection", _load(lambda p: p.update(modulus=INJECTION)), "which is not allowed"),
+    (
+        "unknown_linear_solver",
+        _solver(
+            lambda s: s["linear_solver_settings"].update(solver_type="skyline_lu_factorisation")
+        ),
+        'did you mean "skyline_lu_factorization"',
+    ),
+    (
+        "unknown_criterion",
+        _solver(lambda s: s.update(convergence_criterion="residual_criterium")),
+        'did you mean "residual_criterion"',
+    ),
+    (
+        "contact_criterion",
+        _solver(lambda s: s.update(convergence_criterion="contact_residual_criterion")),
+        "contact criteria are available with",
+    ),
+    (
+        "unknown_solver_type",
+        _solver(lambda s: s.update(solver_type="Statik")),
+        'did you mean "static"',
+    ),
+    (
+        "contact_settings",
+        _solver(lambda s: s.update(contact_settings={"mortar_type": "ALMContactFrictionless"})),
+        "contact solvers arrive with the contact issue",
+    ),
+    (
+        "contact_process",
+        _params(
+            lambda p: p["processes"].update(
+                contact_process_list=[
+                    {
+                        "python_module": "alm_contact_process",
+                        "kratos_module": "ContactStructuralMechanicsApplication",
+                        "Parameters": {},
+                    }
+                ]
+            )
+        ),
+        'contact process module "alm_contact_process"',
+    ),
+    (
+        "legacy_process_lists",
+        _params(lambda p: p.update(loads_process_list=p["processes"].pop("loads_process_list"))),
+        "mixing of process initialization is not allowed",
+    ),
+    (
+        "old_way_process_lists",
+        _params(lambda p: p.update(constraints_process_list=[], processes={})),
+        "the old way to create the processes was removed",
+    ),
+    (
+        "model_part_not_found",
+        _constraint(
+            lambda c: c["Parameters"].update(model_part_name="Structure.DISPLACEMENT_lefft")
+        ),
+        'did you mean "Structure.DISPLACEMENT_left"',
+    ),
+    (
+        "materials_model_part_not_found",
+        lambda case: _edit_json(
+            case,
+            "plate_materials.json",
+            lambda m: m["properties"][0].update(model_part_name="Parts_plat"),
+        ),
+        'no model part "Parts_plat"',
+    ),
+    (
+        "end_before_start",
+        _params(lambda p: p["problem_data"].update(start_time=2.0)),
+        "end_time 1.0 is before start_time 2.0",
+    ),
+    (
+        "negative_time_step",
+        _solver(lambda s: s["time_stepping"].update(time_step=-0.1)),
+        '"time_step" is -0.1',
+    ),
+    ("unknown_element", _bad_element, "plate.mdpa:"),
+    (
+        "explicit_dynamics",
+        _solver(lambda s: s.update(solver_type="Dynamic", time_integration_method="explicit")),
+        "the explicit dynamic solver is not supported yet",
+    ),
+]
+
+
+@pytest.fixture
+def run_case(tmp_path: Path) -> Path:
+    """The static plate case without result check in tmp_path/case (run from tmp_path)."""
+    shutil.copytree(CASE_DATA, tmp_path / "case")
+    _params(lambda p: p["processes"].pop("json_check_process"))(tmp_path / "case")
+    return tmp_path / "case"
+
+
+def _run_in(cwd: Path, *args: str) -> subprocess.CompletedProcess[str]:
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(path for path in sys.path if path))
+    return subprocess.run(
+        [sys.executable, "-m", "contact_app", *args],
+        cwd=cwd,
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=60,
+        check=False,
+    )
+
+
+@pytest.mark.parametrize(
+    ("edit", "fragment"), [case[1:] for case in BAD_INPUTS], ids=[case[0] for case in BAD_INPUTS]
+)
+def test_cli_run_bad_input_exits_two_with_one_message(
+    run_case: Path, edit: Callable[[Path], None], fragment: str
+) -> None:
+    edit(run_case)
+    result = _run_in(run_case.parent, "run", f"case/{PARAMETERS}")
+    assert result.returncode == 2, result.stderr
+    assert "Traceback" not in result.stderr
+    errors = [line for line in result.stderr.splitlines() if line.startswith("error: ")]
+    assert len(errors) == 1, result.stderr
+    assert fragment in result.stderr
+    assert not (run_case / "pwned").exists() and not (run_case.parent / "pwned").exists()
+    assert "step " not in result.stdout  # nothing was solved
+
+
+def test_cli_run_error_names_the_location(run_case: Path) -> None:
+    _solver(lambda s: s.update(max_iterations=5))(run_case)
+    result = _run_in(run_case.parent, "run", f"case/{PARAMETERS}")
+    assert (
+        "where:    plate_static_parameters.json › solver_settings › max_iterations" in result.stderr
+    )
+    assert 'fix:      did you mean "max_iteration"' in result.stderr
+
+
+def test_cli_run_malformed_json_gives_line_and_column(run_case: Path) -> None:
+    _malformed(run_case)
+    result = _run_in(run_case.parent, "run", f"case/{PARAMETERS}")
+    assert "where:    line 4, column" in result.stderr
+
+
+def test_cli_run_debug_shows_the_traceback(run_case: Path) -> None:
+    _solver(lambda s: s.update(max_iterations=5))(run_case)
+    result = _run_in(run_case.parent, "run", "--debug", f"case/{PARAMETERS}")
+    assert result.returncode != 0
+    assert "Traceback" in result.stderr
+    assert "InputError" in result.stderr
+
+
+def test_cli_run_missing_parameters_file(tmp_path: Path) -> None:
+    result = _run_in(tmp_path, "run", "nothing.json")
+    assert result.returncode == 2
+    assert result.stderr.startswith('error: cannot read the settings file "nothing.json"')
+
+
+def test_cli_run_ctrl_c_exits_130_with_one_line(run_case: Path) -> None:
+    (run_case / "interrupt_process.py").write_text(
+        "import os, signal\n\n\nclass Interrupt:\n"
+        "    def __getattr__(self, hook):\n"
+        "        if hook == 'ExecuteInitializeSolutionStep':\n"
+        "            return lambda: os.kill(os.getpid(), signal.SIGINT)\n"
+        "        return lambda: None\n\n\n"
+        "def Factory(settings, model):\n    return Interrupt()\n"
+    )
+    _params(lambda p: p["processes"].update(interrupt=[{"python_module": "interrupt_process"}]))(
+        run_case
+    )
+    result = _run_in(run_case.parent, "run", f"case/{PARAMETERS}")
+    assert result.returncode == 130
+    assert result.stderr.strip().splitlines()[-1] == "interrupted (Ctrl-C)"
+    assert "Traceback" not in result.stderr
+
+
+def test_cli_run_success_in_process(
+    run_case: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    monkeypatch.chdir(run_case.parent)
+    assert cli.main(["run", f"case/{PARAMETERS}"]) == 0
+    captured = capsys.readouterr()
+    assert "summary: 2 steps" in captured.out
+    assert "files written (3): vtk_output/Structure.pvd" in captured.out
+    assert "warning: " in captured.err
+
+
+def test_cli_run_unexpected_exception_is_one_paragraph(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    def broken(*args: Any, **kwargs: Any) -> None:
+        raise RuntimeError("boom")
+
+    monkeypatch.setattr(ca.analysis, "run", broken)
+    assert cli.main(["run", "x.json"]) == 3
+    err = capsys.readouterr().err
+    assert err.startswith(
+        "internal error (a bug in contact_app; please report it): RuntimeError: boom"
+    )
+    with pytest.raises(RuntimeError):
+        cli.main(["run", "--debug", "x.json"])
+
+
+def test_cli_run_quiet_prints_no_table(
+    run_case: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    monkeypatch.chdir(run_case.parent)
+    assert cli.main(["run", "--quiet", f"case/{PARAMETERS}"]) == 0
+    assert capsys.readouterr().out == ""

@@ -1,0 +1,268 @@
+"""Kratos-style analysis stage: the life cycle of a simulation (Kratos ``analysis_stage``).
+
+Order of the calls (``kratos_python_layer.md`` §1.4):
+
+* ``Initialize``: modelers → ``solver.ImportModelPart`` → ``PrepareModelPart`` → ``AddDofs`` →
+  ``ModifyInitialProperties`` → ``ModifyInitialGeometry`` → processes created → every process
+  ``ExecuteInitialize`` → ``solver.Initialize`` → ``Check`` → ``ModifyAfterSolverInitialize`` →
+  every process ``ExecuteBeforeSolutionLoop`` → TIME = start_time.
+* ``RunSolutionLoop``: while ``time < end_time`` (strict): ``AdvanceInTime`` →
+  ``InitializeSolutionStep`` (processes ``ExecuteInitializeSolutionStep``,
+  ``ChangeMaterialProperties``, ``solver.InitializeSolutionStep``) → ``Predict`` →
+  ``SolveSolutionStep`` → ``FinalizeSolutionStep`` (solver, then processes) →
+  ``OutputSolutionStep``.
+* ``OutputSolutionStep``: only when an output process ``IsOutputStep()``: every process
+  ``ExecuteBeforeOutputStep``, ``PrintOutput`` of those output processes, every process
+  ``ExecuteAfterOutputStep``.
+* ``Finalize``: every process ``ExecuteFinalize``, ``solver.Finalize``.
+
+A step that does not converge is reported and the loop goes on, as in Kratos, unless the stage
+was created with ``stop_on_non_convergence``: then it raises ``ConvergenceError`` before that
+step's finalize and output hooks, so the outputs end at the last converged step.
+"""
+
+from __future__ import annotations
+
+import logging
+from typing import Any
+
+import contact_app as ca
+
+from ..parameters import Parameters
+from .reporting import Reporter, StepRecord
+
+logger = logging.getLogger("contact_app.analysis")
+
+
+class AnalysisStage:
+    """Base analysis stage: derived stages create the solver and the processes.
+
+    Args:
+        model: the model to work on.
+        project_parameters: the whole ``ProjectParameters.json`` tree.
+        stop_on_non_convergence: raise ``ConvergenceError`` at the first step that does not
+            converge instead of going on.
+        reporter: console report (default: a table on stdout).
+
+    """
+
+    def __init__(
+        self,
+        model: ca.Model,
+        project_parameters: Parameters,
+        *,
+        stop_on_non_convergence: bool = False,
+        reporter: Reporter | None = None,
+    ):
+        if not isinstance(model, ca.Model):
+            raise TypeError(f"model must be a contact_app.Model, got {type(model).__name__}")
+        self.model = model
+        self.project_parameters = project_parameters
+        self.stop_on_non_convergence = stop_on_non_convergence
+        self.reporter = reporter or Reporter()
+        problem_data = project_parameters["problem_data"]
+        self.echo_level = problem_data["echo_level"].GetInt()
+        self.parallel_type = problem_data["parallel_type"].GetString()
+        self.start_time = problem_data["start_time"].GetDouble()
+        self.end_time = problem_data["end_time"].GetDouble()
+        self.time = self.start_time
+        self._solver: Any = None
+        self._list_of_processes: list[Any] = []
+        self._list_of_output_processes: list[Any] = []
+
+    # -- the three phases --
+
+    def Run(self) -> None:
+        """Initialize, RunSolutionLoop, Finalize (Finalize also runs when the loop stops early)."""
+        self.Initialize()
+        try:
+            self.RunSolutionLoop()
+        except ca.ConvergenceError:
+            self.Finalize()
+            raise
+        self.Finalize()
+
+    def Initialize(self) -> None:
+        """Read the model, create the processes, initialize solver and processes."""
+        solver = self._GetSolver()
+        with self.reporter.phase("import"):
+            self._ModelersSetup()
+            solver.ImportModelPart()
+            solver.PrepareModelPart()
+            solver.AddDofs()
+        with self.reporter.phase("initialize"):
+            self.ModifyInitialProperties()
+            self.ModifyInitialGeometry()
+            self._CreateListsOfProcesses()
+            for process in self._GetListOfProcesses():
+                process.ExecuteInitialize()
+            solver.Initialize()
+            self.Check()
+            self.ModifyAfterSolverInitialize()
+            for process in self._GetListOfProcesses():
+                process.ExecuteBeforeSolutionLoop()
+            self.time = self.start_time
+            solver.GetComputingModelPart().ProcessInfo[ca.TIME] = self.time
+
+    def RunSolutionLoop(self) -> None:
+        """Solve the steps while ``time < end_time``."""
+        solver = self._GetSolver()
+        self.reporter.begin_loop(self.start_time, self.end_time, self._ExpectedSteps())
+        while self.KeepAdvancingSolutionLoop():
+            with self.reporter.phase("solve"):
+                self.time = solver.AdvanceInTime(self.time)
+                builder = solver.GetBuilderAndSolver()
+                builder.ResetTimings()
+                self.InitializeSolutionStep()
+                solver.Predict()
+                converged = bool(solver.SolveSolutionStep())
+                self.reporter.add_builder_timings(builder.GetTimings())
+                self.reporter.record_step(self._StepRecord(converged))
+                if not converged and self.stop_on_non_convergence:
+                    self._StopOnNonConvergence()
+                self.FinalizeSolutionStep()
+            with self.reporter.phase("output"):
+                self.OutputSolutionStep()
+
+    def Finalize(self) -> None:
+        """Every process ``ExecuteFinalize``, then ``solver.Finalize``."""
+        with self.reporter.phase("output"):
+            for process in self._GetListOfProcesses():
+                process.ExecuteFinalize()
+        self._GetSolver().Finalize()
+
+    # -- per step --
+
+    def KeepAdvancingSolutionLoop(self) -> bool:
+        """True while ``time < end_time`` (strict, as in Kratos)."""
+        return self.time < self.end_time
+
+    def InitializeSolutionStep(self) -> None:
+        """Apply the processes' step values, then initialize the solver step."""
+        self.ApplyBoundaryConditions()
+        self.ChangeMaterialProperties()
+        self._GetSolver().InitializeSolutionStep()
+
+    def ApplyBoundaryConditions(self) -> None:
+        """Every process ``ExecuteInitializeSolutionStep``."""
+        for process in self._GetListOfProcesses():
+            process.ExecuteInitializeSolutionStep()
+
+    def ChangeMaterialProperties(self) -> None:
+        """Hook (empty)."""
+
+    def FinalizeSolutionStep(self) -> None:
+        """``solver.FinalizeSolutionStep``, then every process ``ExecuteFinalizeSolutionStep``."""
+        self._GetSolver().FinalizeSolutionStep()
+        for process in self._GetListOfProcesses():
+            process.ExecuteFinalizeSolutionStep()
+
+    def OutputSolutionStep(self) -> None:
+        """Before/After output hooks around the output processes that print this step."""
+        printing = [p for p in self._GetListOfOutputProcesses() if p.IsOutputStep()]
+        if not printing:
+            return
+        for process in self._GetListOfProcesses():
+            process.ExecuteBeforeOutputStep()
+        for process in printing:
+            process.PrintOutput()
+        for process in self._GetListOfProcesses():
+            process.ExecuteAfterOutputStep()
+
+    def Check(self) -> None:
+        """Check the solver and every process."""
+        self._GetSolver().Check()
+        for process in self._GetListOfProcesses():
+            process.Check()
+
+    # -- hooks --
+
+    def ModifyInitialProperties(self) -> None:
+        """Hook (empty)."""
+
+    def ModifyInitialGeometry(self) -> None:
+        """Hook (empty)."""
+
+    def ModifyAfterSolverInitialize(self) -> None:
+        """Hook (empty)."""
+
+    def _ModelersSetup(self) -> None:
+        """Modelers (none supported; the derived stage rejects a non-empty list)."""
+
+    # -- solver and processes --
+
+    def _GetSolver(self) -> Any:
+        if self._solver is None:
+            self._solver = self._CreateSolver()
+        return self._solver
+
+    def _CreateSolver(self) -> Any:
+        raise NotImplementedError("derived analysis stages create the solver")
+
+    def _CreateListsOfProcesses(self) -> None:
+        self._list_of_processes = self._CreateProcesses("processes")
+        outputs = self._CreateProcesses("output_processes")
+        misplaced = [p for p in self._list_of_processes if _is_output(p)]
+        for process in misplaced:
+            logger.warning(
+                'the output process %s is listed in "processes"; it is used as an output process, '
+                'but belongs in "output_processes"',
+                type(process).__name__,
+            )
+        self._list_of_output_processes = misplaced + outputs
+        self._list_of_processes += outputs
+
+    def _CreateProcesses(self, parameter_name: str) -> list[Any]:
+        raise NotImplementedError("derived analysis stages create the processes")
+
+    def _GetListOfProcesses(self) -> list[Any]:
+        return self._list_of_processes
+
+    def _GetListOfOutputProcesses(self) -> list[Any]:
+        return self._list_of_output_processes
+
+    # -- reporting --
+
+    def _ExpectedSteps(self) -> int | None:
+        return None
+
+    def _StepRecord(self, converged: bool) -> StepRecord:
+        solver = self._GetSolver()
+        info = solver.GetComputingModelPart().ProcessInfo
+        strategy = solver.GetSolutionStrategy()
+        criterion = solver.GetConvergenceCriterion()
+        residual = increment = None
+        if criterion is not None:
+            if criterion.residual is not None:
+                residual = (criterion.residual.LastRatio(), criterion.residual.LastAbsolute())
+            if criterion.displacement is not None:
+                increment = (
+                    criterion.displacement.LastRatio(),
+                    criterion.displacement.LastAbsolute(),
+                )
+        return StepRecord(
+            info[ca.STEP],
+            info[ca.TIME],
+            int(strategy.GetIterationNumber()),
+            residual,
+            increment,
+            converged,
+        )
+
+    def _StopOnNonConvergence(self) -> None:
+        solver = self._GetSolver()
+        info = solver.GetComputingModelPart().ProcessInfo
+        raise ca.ConvergenceError(
+            f"step {info[ca.STEP]} (TIME = {info[ca.TIME]:.6g}) did not converge in "
+            f"{solver.GetSolutionStrategy().GetIterationNumber()} iterations; last norms: "
+            f"{solver.LastNorms() or 'n/a'}\n"
+            "  stopped:  as asked by --stop-on-non-convergence; the outputs end at the last "
+            "converged step\n"
+            "  fix:      reduce the time step, raise max_iteration, or check loads and supports"
+        )
+
+
+def _is_output(process: Any) -> bool:
+    return callable(getattr(process, "IsOutputStep", None)) and callable(
+        getattr(process, "PrintOutput", None)
+    )

@@ -1,0 +1,82 @@
+"""Relative paths written in a settings file: the working directory first, then the file's folder.
+
+Kratos opens every relative path (``input_filename``, ``materials_filename``, the json
+``input_file_name``, ``output_path`` ...) against the working directory, and its test suites run
+with the working directory set to the folder of the settings file. ``contact-app run`` keeps that
+rule and adds one fallback so that a case runs from anywhere: when a path does not exist relative
+to the working directory but does relative to the folder of the ``ProjectParameters.json``, that
+one is used. Outputs (files or folders that may not exist yet) go to the working directory unless
+only the settings file's folder has their parent directory.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from .._core import InputError
+
+
+class PathResolver:
+    """Resolve the relative paths of one settings file.
+
+    Args:
+        base_dir: folder of the settings file, or None for settings built in memory (then paths
+            resolve against the working directory only).
+
+    """
+
+    def __init__(self, base_dir: str | Path | None = None):
+        self.base_dir = Path(base_dir).resolve() if base_dir is not None else None
+
+    def _fallback_applies(self, path: Path) -> bool:
+        return not path.is_absolute() and self.base_dir is not None and self.base_dir != Path.cwd()
+
+    def input_path(self, value: str, where: str, what: str = "file") -> str:
+        """Return the path of an existing input file.
+
+        Args:
+            value: the path as written in the settings.
+            where: its location in the settings, for the message.
+            what: what the file is ("mdpa file", "materials file", ...), for the message.
+
+        Returns:
+            ``value`` itself when it exists relative to the working directory (or is absolute and
+            exists), else the path inside the settings file's folder.
+
+        Raises:
+            InputError: the file exists in neither place.
+
+        """
+        path = Path(value)
+        if path.exists():
+            return value
+        if self._fallback_applies(path):
+            candidate = self.base_dir / path  # type: ignore[operator]
+            if candidate.exists():
+                return str(candidate)
+        looked = [str(path.resolve())]
+        if self._fallback_applies(path):
+            looked.append(str(self.base_dir / path))  # type: ignore[operator]
+        raise InputError(
+            f'{what} "{value}" not found\n  where:    {where}\n'
+            f"  expected: an existing file; looked for {' and '.join(looked)}\n"
+            "  fix:      correct the path (relative paths start from the working directory, "
+            "then from the folder of the parameters file)"
+        )
+
+    def output_path(self, value: str) -> str:
+        """Return where an output file or folder goes.
+
+        The working directory is used when the path or its parent exists there; the settings
+        file's folder when only it has them; otherwise the working directory (the writer creates
+        the folders).
+        """
+        path = Path(value)
+        if not self._fallback_applies(path):
+            return value
+        candidate = self.base_dir / path  # type: ignore[operator]
+        here_ok = path.exists() or path.parent.exists()
+        there_ok = candidate.exists() or candidate.parent.exists()
+        if not here_ok and there_ok:
+            return str(candidate)
+        return value
