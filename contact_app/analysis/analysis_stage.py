@@ -209,7 +209,14 @@ class AnalysisStage:
                 'but belongs in "output_processes"',
                 type(process).__name__,
             )
-        self._list_of_output_processes = misplaced + outputs
+        not_outputs = [p for p in outputs if not _is_output(p)]
+        for process in not_outputs:
+            logger.warning(
+                'the process %s is listed in "output_processes" but has no IsOutputStep/PrintOutput; '
+                'it runs as a regular process (its place is "processes")',
+                type(process).__name__,
+            )
+        self._list_of_output_processes = misplaced + [p for p in outputs if _is_output(p)]
         self._list_of_processes += outputs
 
     def _CreateProcesses(self, parameter_name: str) -> list[Any]:
