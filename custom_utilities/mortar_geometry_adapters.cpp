@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_utilities/mortar_geometry_adapters.h"
+
+#include "contact_app/kernel/exceptions.h"
+#include "contact_app/kernel/variables.h"
+
+namespace contact_app {
+namespace {
+
+void CheckNodeCount(const Geometry& geometry, int expected) {
+    CONTACT_CHECK(static_cast<int>(geometry.PointsNumber()) == expected, InputError, "geometry ", geometry.Name(),
+                  " with nodes ", geometry.NodeIdsString(), " has ", geometry.PointsNumber(),
+                  " nodes\n  expected: ", expected, " nodes for this mortar pair\n  fix: pair a condition of the ",
+                  "matching face type (Line2D2, Triangle3D3 or Quadrilateral3D4)");
+}
+
+}  // namespace
+
+template <int TDim, int TNN>
+NodeCoordinates<double, TDim, TNN> CurrentCoordinates(const Geometry& geometry) {
+    CheckNodeCount(geometry, TNN);
+    NodeCoordinates<double, TDim, TNN> x;
+    for (int k = 0; k < TNN; ++k) x.row(k) = geometry[k].Coordinates().head<TDim>().transpose();
+    return x;
+}
+
+template <int TDim, int TNN>
+NodeCoordinates<double, TDim, TNN> CoordinatesAtStep(const Geometry& geometry, std::size_t step) {
+    CheckNodeCount(geometry, TNN);
+    NodeCoordinates<double, TDim, TNN> x;
+    for (int k = 0; k < TNN; ++k) {
+        const Array3 position = geometry[k].InitialCoordinates() + geometry[k].GetSolutionStepValue(DISPLACEMENT, step);
+        x.row(k) = position.head<TDim>().transpose();
+    }
+    return x;
+}
+
+template <int TDim, int TNN>
+NodeCoordinates<double, TDim, TNN> NodalNormals(const Geometry& geometry) {
+    CheckNodeCount(geometry, TNN);
+    NodeCoordinates<double, TDim, TNN> n;
+    for (int k = 0; k < TNN; ++k) n.row(k) = geometry[k].GetSolutionStepValue(NORMAL).head<TDim>().transpose();
+    return n;
+}
+
+#define CONTACT_APP_INSTANTIATE_ADAPTERS(D, NN)                                                          \
+    template NodeCoordinates<double, D, NN> CurrentCoordinates<D, NN>(const Geometry&);                  \
+    template NodeCoordinates<double, D, NN> CoordinatesAtStep<D, NN>(const Geometry&, std::size_t);     \
+    template NodeCoordinates<double, D, NN> NodalNormals<D, NN>(const Geometry&);
+CONTACT_APP_INSTANTIATE_ADAPTERS(2, 2)
+CONTACT_APP_INSTANTIATE_ADAPTERS(3, 3)
+CONTACT_APP_INSTANTIATE_ADAPTERS(3, 4)
+#undef CONTACT_APP_INSTANTIATE_ADAPTERS
+
+}  // namespace contact_app

@@ -1,0 +1,164 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Dense>
+
+#include "automatic_differentiation/ad_helpers.h"
+#include "custom_utilities/mortar_shape_functions.h"
+#include "custom_utilities/mortar_types.h"
+
+namespace contact_app::detail {
+
+// Small scalar-generic geometry kernels shared by the segmentation and the integration. Nonlinear solves
+// (bilinear inverse maps, projections on quadrilaterals) iterate on values, then take one Newton step in
+// the AD scalar from the converged point: the value is unchanged and, by the implicit-function theorem,
+// the derivative is exact.
+
+template <class T>
+using Vec2 = Eigen::Matrix<T, 2, 1>;
+template <class T>
+using Vec3 = Eigen::Matrix<T, 3, 1>;
+
+template <class T, class TDerived>
+T Norm(const Eigen::MatrixBase<TDerived>& v) {
+    using std::sqrt;
+    return sqrt(v.dot(v));
+}
+
+template <class T>
+T Cross2(const Vec2<T>& a, const Vec2<T>& b) { return a[0] * b[1] - a[1] * b[0]; }
+
+/// x(ξ) = Σ N_k(ξ) X_k on a face with nodes X (rows).
+template <int TNumNodes, int TDim, class T, class TLocal>
+SpatialVector<T, TDim> FacePoint(const NodeCoordinates<T, TDim, TNumNodes>& nodes,
+                                 const Eigen::Matrix<TLocal, FaceLocalDim<TNumNodes>, 1>& xi) {
+    const auto shape = FaceShapeFunctions<TNumNodes, TLocal>(xi);
+    SpatialVector<T, TDim> x = SpatialVector<T, TDim>::Zero();
+    for (int k = 0; k < TNumNodes; ++k) x += shape[k] * nodes.row(k).transpose();
+    return x;
+}
+
+/// Orthonormal frame (c; t1, t2, n) of the reference plane of a 3D slave.
+template <class T>
+struct PlaneFrame {
+    Vec3<T> center, normal, t1, t2;
+    /// @return false if the normal is (numerically) zero or not finite
+    template <class TN>
+    bool Build(const Vec3<T>& c, const Vec3<TN>& n_in) {
+        center = c;
+        normal = n_in.template cast<T>();
+        const T length = Norm<T>(normal);
+        if (!(Value(length) > 1.0e-300) || !std::isfinite(Value(length))) return false;
+        normal /= length;
+        int axis = 0;  // the axis least aligned with n gives a well-conditioned in-plane direction
+        for (int k = 1; k < 3; ++k)
+            if (std::abs(Value(normal[k])) < std::abs(Value(normal[axis]))) axis = k;
+        Vec3<T> a = Vec3<T>::Zero();
+        a[axis] = 1.0;
+        t1 = a - normal * normal[axis];
+        t1 /= Norm<T>(t1);
+        t2 = normal.cross(t1);
+        return true;
+    }
+    Vec2<T> Project(const Vec3<T>& x) const {
+        const Vec3<T> d = x - center;
+        return Vec2<T>(d.dot(t1), d.dot(t2));
+    }
+    T Distance(const Vec3<T>& x) const { return (x - center).dot(normal); }
+};
+
+/// Values of an array of plane points.
+template <class T, std::size_t TN>
+std::array<Vec2<double>, TN> PlaneValues(const std::array<Vec2<T>, TN>& points) {
+    std::array<Vec2<double>, TN> result;
+    for (std::size_t k = 0; k < TN; ++k) result[k] = Values(points[k]);
+    return result;
+}
+
+/// ξ with Σ N_k(ξ) q_k = p for a triangle/quadrilateral in the plane (values only).
+/// @return false if the map is singular or Newton does not converge
+template <int TNumNodes>
+bool InverseMapValue(const std::array<Vec2<double>, TNumNodes>& q, const Vec2<double>& p, Vec2<double>& xi) {
+    xi = FaceCentroid<TNumNodes>();
+    double scale = 0.0;
+    for (const auto& v : q) scale = std::max(scale, (v - q[0]).norm());
+    if (!(scale > 0.0) || !std::isfinite(scale)) return false;
+    for (int iteration = 0; iteration < 30; ++iteration) {
+        const auto shape = FaceShapeFunctions<TNumNodes, double>(xi);
+        const auto grad = FaceShapeGradients<TNumNodes, double>(xi);
+        Vec2<double> r = -p;
+        Eigen::Matrix2d jac = Eigen::Matrix2d::Zero();
+        for (int k = 0; k < TNumNodes; ++k) {
+            r += shape[k] * q[k];
+            jac += q[k] * grad.row(k);
+        }
+        const double det = jac.determinant();
+        if (!(std::abs(det) > 1.0e-14 * scale * scale)) return false;
+        const Vec2<double> step = -jac.inverse() * r;
+        xi += step;
+        if (!xi.allFinite() || xi.cwiseAbs().maxCoeff() > 1.0e6) return false;
+        if (step.norm() < 1.0e-14 || TNumNodes == 3) return true;
+    }
+    return false;
+}
+
+/// As InverseMapValue, in the scalar T (one Newton step in T from the converged value).
+template <int TNumNodes, class T>
+bool InverseMap(const std::array<Vec2<T>, TNumNodes>& q, const Vec2<T>& p, Vec2<T>& xi) {
+    Vec2<double> xi0;
+    if (!InverseMapValue<TNumNodes>(PlaneValues(q), Values(p), xi0)) return false;
+    const auto shape = FaceShapeFunctions<TNumNodes, double>(xi0);
+    const auto grad = FaceShapeGradients<TNumNodes, double>(xi0);
+    Vec2<T> r = -p;
+    Eigen::Matrix<T, 2, 2> jac = Eigen::Matrix<T, 2, 2>::Zero();
+    for (int k = 0; k < TNumNodes; ++k) {
+        r += shape[k] * q[k];
+        jac += q[k] * grad.row(k).template cast<T>();
+    }
+    xi = xi0.template cast<T>() - jac.inverse() * r;
+    return true;
+}
+
+/// Local coordinates η of the point where the ray x + s·dir meets the face (Line2D2 in 2D, triangle or
+/// bilinear quadrilateral in 3D): solves x_face(η) − s·dir = x. Values first, then one step in T.
+/// @return false if the ray is parallel to the face or Newton fails
+template <int TNumNodes, int TDim, class T>
+bool ProjectAlongDirection(const NodeCoordinates<T, TDim, TNumNodes>& face, const SpatialVector<T, TDim>& x,
+                           const SpatialVector<T, TDim>& dir, Eigen::Matrix<T, TDim - 1, 1>& eta) {
+    using Square = Eigen::Matrix<double, TDim, TDim>;
+    const NodeCoordinates<double, TDim, TNumNodes> fv = Values(face);
+    const SpatialVector<double, TDim> xv = Values(x), dv = Values(dir);
+    const double scale = (fv.rowwise() - fv.row(0)).rowwise().norm().maxCoeff();
+    if (!(scale > 0.0) || !std::isfinite(scale) || !(dv.norm() > 0.0)) return false;
+    SpatialVector<double, TDim> u = SpatialVector<double, TDim>::Zero();
+    u.template head<TDim - 1>() = FaceCentroid<TNumNodes>();
+    bool converged = false;
+    for (int iteration = 0; iteration < 30 && !converged; ++iteration) {
+        const Eigen::Matrix<double, TDim - 1, 1> e = u.template head<TDim - 1>();
+        Square jac;
+        jac.template leftCols<TDim - 1>() = fv.transpose() * FaceShapeGradients<TNumNodes, double>(e);
+        jac.col(TDim - 1) = -dv;
+        const SpatialVector<double, TDim> r = fv.transpose() * FaceShapeFunctions<TNumNodes, double>(e) - u[TDim - 1] * dv - xv;
+        const double det = jac.determinant();
+        if (!(std::abs(det) > 1.0e-12 * std::pow(scale, TDim - 1) * dv.norm())) return false;
+        const SpatialVector<double, TDim> step = -jac.inverse() * r;
+        u += step;
+        if (!u.allFinite() || u.template head<TDim - 1>().cwiseAbs().maxCoeff() > 1.0e6) return false;
+        converged = TNumNodes <= TDim || step.norm() < 1.0e-14 * (1.0 + u.norm());
+    }
+    if (!converged) return false;
+    const Eigen::Matrix<double, TDim - 1, 1> e0 = u.template head<TDim - 1>();
+    Eigen::Matrix<T, TDim, TDim> jac;
+    jac.template leftCols<TDim - 1>() = face.transpose() * FaceShapeGradients<TNumNodes, double>(e0).template cast<T>();
+    jac.col(TDim - 1) = -dir;
+    const SpatialVector<T, TDim> r =
+        face.transpose() * FaceShapeFunctions<TNumNodes, double>(e0).template cast<T>() - u[TDim - 1] * dir - x;
+    const SpatialVector<T, TDim> ut = u.template cast<T>() - jac.inverse() * r;
+    eta = ut.template head<TDim - 1>();
+    return true;
+}
+
+}  // namespace contact_app::detail

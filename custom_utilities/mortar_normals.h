@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include "custom_utilities/mortar_types.h"
+
+namespace contact_app {
+
+class ModelPart;
+
+/// @brief Mean nodal normals of a model part (Kratos MortarUtilities::ComputeNodesMeanNormalModelPart):
+///        historical NORMAL of every node is reset; each condition whose local dimension is its working
+///        dimension − 1 (paired/coupling conditions are skipped) gets its unit normal at the centre as the
+///        non-historical condition NORMAL (if @p compute_conditions) and adds to each of its nodes its unit
+///        normal at that node (unweighted); finally the nodal sums are normalised.
+/// @param[in,out] model_part its nodes must store NORMAL as a historical variable
+/// @param[in] compute_conditions also write the condition NORMAL values
+/// @throws InputError if NORMAL is not a historical variable, or an INTERFACE node ends with a zero normal
+void ComputeNodesMeanNormalModelPart(ModelPart& model_part, bool compute_conditions = true);
+
+/// @brief Unit normal of a linear face at local point @p local, templated on the scalar (NV variants
+///        differentiate it). Line2D2: (t_y, −t_x)/|t| with t = dx/dξ; surfaces: (J₀ × J₁)/|J₀ × J₁|, the
+///        kernel's Geometry::UnitNormal convention. Zero vector for a degenerate face (never NaN).
+/// @param[in] x n × d node coordinates; @param[in] local (d−1) local coordinates
+template <int TDim, int TNumNodes, class T>
+SpatialVector<T, TDim> FaceUnitNormal(const NodeCoordinates<T, TDim, TNumNodes>& x,
+                                      const Eigen::Matrix<double, TDim - 1, 1>& local);
+
+/// @brief FaceUnitNormal at the reference centre (the condition NORMAL of §5.1).
+template <int TDim, int TNumNodes, class T>
+SpatialVector<T, TDim> FaceCenterUnitNormal(const NodeCoordinates<T, TDim, TNumNodes>& x);
+
+/// @brief FaceUnitNormal of this face at each of its nodes (row i = node i): the NV linearisation of the
+///        nodal normals restricted to the face's own geometry (kratos_cpp_internals.md §3.2, with the exact
+///        derivative (δa − n(n·δa))/|a| of §3.1 instead of the coded one [BUG?]).
+template <int TDim, int TNumNodes, class T>
+NodeCoordinates<T, TDim, TNumNodes> FaceNodalUnitNormals(const NodeCoordinates<T, TDim, TNumNodes>& x);
+
+}  // namespace contact_app

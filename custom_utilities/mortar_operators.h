@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <vector>
+
+#include "contact_app/kernel/geometries/quadrature.h"
+#include "custom_utilities/exact_mortar_segmentation.h"
+#include "custom_utilities/mortar_types.h"
+
+namespace contact_app {
+
+/// Kinematics at one mortar integration point (Kratos MortarKinematicVariables).
+template <class T, int TDim, int TNumNodes, int TNumNodesMaster>
+struct MortarGaussPoint {
+    Eigen::Matrix<T, TNumNodes, 1> N1;        ///< slave shape functions at the point
+    Eigen::Matrix<T, TNumNodesMaster, 1> N2;  ///< master shape functions at the projected point
+    SpatialVector<T, TDim> x1;                ///< point on the slave face
+    SpatialVector<T, TDim> normal;            ///< unit GP normal, normalised Σ N1_i n_i
+    T weight;                                 ///< w_gp · det J_cell · (2π r / t if axisymmetric)
+};
+
+/// @brief Gauss rule on one integration cell from INTEGRATION_ORDER_CONTACT (GetIntegrationMethod table):
+///        orders 1..5 → GAUSS_1..5 (line 1..5 points, triangle 1,3,4,6,7 points), any other value → 2.
+/// @param[in] dim 2 (line cells) or 3 (triangle cells)
+const std::vector<IntegrationPoint>& MortarCellGaussRule(int dim, int integration_order_contact);
+
+/// Integration of the mortar operators and of the dual basis over the cells of one pair
+/// (Popp eq. 3.31/3.32 and 3.65):  D_jk = Σ w Φ_j N1_k,  M_jl = Σ w Φ_j N2_l,
+/// De = Σ w diag(N1), Me = Σ w N1 N1ᵀ, Ae = De Me⁻¹ (safeguarded). Cells come from
+/// ExactMortarSegmentation; each Gauss point of a cell is mapped to the slave (local coordinates), then
+/// projected on the master along the GP normal (normalised Σ N1_i n_i of the nodal normals n_i).
+/// Templated on the scalar: with Dual coordinates every output carries its exact derivatives.
+/// See docs/theory/mortar.md §2–3.
+template <int TDim, int TNumNodes, int TNumNodesMaster, class TScalar = double>
+class MortarIntegrator {
+public:
+    using Segmentation = ExactMortarSegmentation<TDim, TNumNodes, TNumNodesMaster, TScalar>;
+    using GaussPoint = MortarGaussPoint<TScalar, TDim, TNumNodes, TNumNodesMaster>;
+    using Operators = MortarOperators<TScalar, TNumNodes, TNumNodesMaster>;
+    using DualBasisType = DualBasis<TScalar, TNumNodes>;
+    using SlaveMatrix = Eigen::Matrix<TScalar, TNumNodes, TNumNodes>;
+
+    explicit MortarIntegrator(MortarIntegrationSettings settings = {}, SegmentationSettings segmentation = {})
+        : mSettings(settings), mSegmentation(segmentation) {}
+
+    /// @brief Kinematics at every Gauss point of every non-degenerate cell.
+    /// @param[in] slave n_s × d, master n_m × d current coordinates
+    /// @param[in] slave_normal d-vector, slave condition normal (the segmentation direction)
+    /// @param[in] nodal_normals n_s × d unit nodal NORMAL of the slave nodes
+    /// @param[in] cells cells from ComputeCells on the same data
+    /// @param[out] points cleared, then filled; points whose master projection fails are skipped
+    template <class TNormal>
+    void ComputeGaussPoints(const typename Segmentation::SlaveCoordinates& slave,
+                            const SpatialVector<TNormal, TDim>& slave_normal,
+                            const typename Segmentation::MasterCoordinates& master,
+                            const NodeCoordinates<TNormal, TDim, TNumNodes>& nodal_normals,
+                            const MortarCells<TScalar, TDim>& cells, std::vector<GaussPoint>& points) const;
+
+    /// @brief Ae = De·Me⁻¹ over the points (Kratos CalculateAe safeguard: ‖Me‖_F < ε or
+    ///        |det(Me/‖Me‖_F)| < ε → Ae = I, dual = false).
+    static DualBasisType ComputeDualBasis(const std::vector<GaussPoint>& points);
+    /// @brief D and M with Φ = Ae·N1 (pass DualBasis{} for standard multipliers).
+    static Operators ComputeOperators(const std::vector<GaussPoint>& points, const DualBasisType& dual);
+    /// @brief Safeguarded Ae = De·Me⁻¹. @return false (and Ae = I) when Me is (numerically) singular
+    static bool CalculateAe(const SlaveMatrix& De, const SlaveMatrix& Me, SlaveMatrix& Ae);
+
+    const Segmentation& GetSegmentation() const { return mSegmentation; }
+    const MortarIntegrationSettings& Settings() const { return mSettings; }
+
+private:
+    MortarIntegrationSettings mSettings;
+    Segmentation mSegmentation;
+};
+
+/// Everything a condition needs from one pair: the isolation decision, the dual basis and D, M.
+template <class T, int TDim, int TNumNodes, int TNumNodesMaster>
+struct MortarPairIntegration {
+    bool used = false;  ///< cells found and overlap / slave area > 1e−5 (otherwise ISOLATED)
+    T area = T(0.0);    ///< total cell area (length in 2D)
+    MortarCells<T, TDim> cells;
+    DualBasis<T, TNumNodes> dual;
+    MortarOperators<T, TNumNodes, TNumNodesMaster> operators;
+};
+
+/// @brief Segmentation + isolation rule + (optional) dual basis + D, M for one pair (condition steps 2–4).
+/// @param[in] dual_lm request dual multipliers (falls back to standard ones when Ae fails)
+/// The slave measure of the 1e−5 rule is the face length (2D), area (triangle) or ½|d₁×d₂| (quadrilateral).
+template <int TDim, int TNumNodes, int TNumNodesMaster, class T, class TNormal>
+MortarPairIntegration<T, TDim, TNumNodes, TNumNodesMaster> IntegrateMortarPair(
+    const MortarIntegrator<TDim, TNumNodes, TNumNodesMaster, T>& integrator,
+    const NodeCoordinates<T, TDim, TNumNodes>& slave, const SpatialVector<TNormal, TDim>& slave_normal,
+    const NodeCoordinates<T, TDim, TNumNodesMaster>& master,
+    const NodeCoordinates<TNormal, TDim, TNumNodes>& nodal_normals, bool dual_lm);
+
+}  // namespace contact_app

@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "automatic_differentiation/dual.h"
+
+namespace contact_app {
+
+/// Compile-time description of a registered mortar pair <TDim, TNumNodes (slave), TNumNodesMaster>:
+/// 2D2N <2,2,2>, 3D3N <3,3,3>, 3D4N <3,4,4>, 3D3N4N <3,3,4>, 3D4N3N <3,4,3>.
+/// DOF index convention (as Kratos' DerivativeData): q = node·TDim + component, slave nodes first.
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+struct MortarPairTraits {
+    static constexpr int Dim = TDim;
+    static constexpr int NumSlave = TNumNodes;
+    static constexpr int NumMaster = TNumNodesMaster;
+    static constexpr int LocalDim = TDim - 1;
+    /// Number of coordinate DOFs of the pair, d·(n_s + n_m).
+    static constexpr int NumDofs = TDim * (TNumNodes + TNumNodesMaster);
+    /// PointBelongs base value B = n_s + n_m (generic intersection); edge hashes are B + 10·s0 + ….
+    static constexpr int BaseTag = TNumNodes + TNumNodesMaster;
+    /// The AD scalar holding ∂/∂(all pair coordinates).
+    using ADScalar = Dual<NumDofs>;
+};
+
+/// Node coordinates of one side: row i = node i (TDim columns).
+template <class T, int TDim, int TNumNodes>
+using NodeCoordinates = Eigen::Matrix<T, TNumNodes, TDim>;
+/// One TDim-vector (a condition normal, a point).
+template <class T, int TDim>
+using SpatialVector = Eigen::Matrix<T, TDim, 1>;
+
+/// One integration cell: TDim vertices in slave local coordinates (ξ in 2D, (ξ, η) in 3D) and, per vertex,
+/// its PointBelongs tag (kratos_cpp_internals.md §1.1): v < n_s slave node v; n_s ≤ v < B master node v−n_s;
+/// B generic intersection (tessellation centroid); v > B edge–edge intersection B + 10·s0 + 100·s1 +
+/// 1000·m0 + 10000·m1.
+template <class T, int TDim>
+struct MortarCell {
+    std::array<Eigen::Matrix<T, TDim - 1, 1>, TDim> local;
+    std::array<int, TDim> belong{};
+};
+
+template <class T, int TDim>
+using MortarCells = std::vector<MortarCell<T, TDim>>;
+
+/// Segmentation options (ProcessInfo DISTANCE_THRESHOLD, ZERO_TOLERANCE_FACTOR; Properties
+/// CONSIDER_TESSELLATION). Defaults are the Kratos ones.
+struct SegmentationSettings {
+    /// A master node farther than this in front of the slave (along the slave normal) → no cells.
+    double distance_threshold = 1.0e24;
+    /// Multiplies the tolerance of the inside tests.
+    double zero_tolerance_factor = 1.0;
+    /// Triangulate the clipped polygon around its centroid (n cells) instead of a vertex fan (n−2 cells).
+    bool consider_tessellation = false;
+};
+
+/// Integration options (Properties INTEGRATION_ORDER_CONTACT; axisymmetric THICKNESS).
+struct MortarIntegrationSettings {
+    /// INTEGRATION_ORDER_CONTACT: 1..5 → Gauss order 1..5 on every cell, any other value → 2.
+    int integration_order = 2;
+    /// > 0: axisymmetric, every weight is multiplied by 2π r / thickness (r = x-coordinate of the point).
+    double axisymmetric_thickness = 0.0;
+};
+
+/// Mortar operators of one pair: D (n_s × n_s), M (n_s × n_m), D_jk = ∫ Φ_j N1_k, M_jl = ∫ Φ_j N2_l.
+template <class T, int TNumNodes, int TNumNodesMaster>
+struct MortarOperators {
+    Eigen::Matrix<T, TNumNodes, TNumNodes> D = Eigen::Matrix<T, TNumNodes, TNumNodes>::Zero();
+    Eigen::Matrix<T, TNumNodes, TNumNodesMaster> M = Eigen::Matrix<T, TNumNodes, TNumNodesMaster>::Zero();
+    void Initialize() {
+        D.setZero();
+        M.setZero();
+    }
+};
+
+/// Dual basis coefficients Φ = Ae·N1 and whether the inversion succeeded (false → Ae = I, standard LM).
+template <class T, int TNumNodes>
+struct DualBasis {
+    Eigen::Matrix<T, TNumNodes, TNumNodes> Ae = Eigen::Matrix<T, TNumNodes, TNumNodes>::Identity();
+    bool dual = false;
+};
+
+}  // namespace contact_app
