@@ -212,8 +212,8 @@ class AnalysisStage:
         not_outputs = [p for p in outputs if not _is_output(p)]
         for process in not_outputs:
             logger.warning(
-                'the process %s is listed in "output_processes" but has no IsOutputStep/PrintOutput; '
-                'it runs as a regular process (its place is "processes")',
+                'the process %s is listed in "output_processes" but has no '
+                'IsOutputStep/PrintOutput; it runs as a regular process (its place is "processes")',
                 type(process).__name__,
             )
         self._list_of_output_processes = misplaced + [p for p in outputs if _is_output(p)]
