@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from ._utilities import array_components, get_variable
+from ._utilities import array_components, check_historical, get_flag, get_variable
 
 NODAL_KINDS = ("Double", "Component", "Array", "Vector")
 GAUSS_KINDS = ("Double", "Array", "Vector")
@@ -112,3 +112,23 @@ def nearest_index(times: list[float], time: float) -> int:
         return len(times) - 1
     before, after = times[position - 1], times[position]
     return position if after - time <= time - before else position - 1
+
+
+def read_columns(
+    settings: Any, model_part: Any, nodal_key: str, gauss_key: str
+) -> tuple[bool, list[Column], list[Column], Any]:
+    """Read what the JSON output and check processes share from their settings.
+
+    Returns (historical, nodal columns, Gauss-point columns, flag or None); checks that historical
+    variables are solution-step variables of ``model_part``.
+    """
+    historical = settings["historical_value"].GetBool()
+    where = settings.Where(nodal_key)
+    columns = nodal_columns(settings[nodal_key].GetStringArray(), where)
+    if historical:
+        for column in columns:
+            check_historical(model_part, column.variable, where)
+    gauss = gauss_columns(settings[gauss_key].GetStringArray(), settings.Where(gauss_key))
+    flag_name = settings["check_for_flag"].GetString()
+    flag = get_flag(flag_name, settings.Where("check_for_flag")) if flag_name else None
+    return historical, columns, gauss, flag

@@ -35,14 +35,13 @@ from ._json_results import (
     Column,
     Value,
     element_key,
-    gauss_columns,
     gauss_values,
     nearest_index,
-    nodal_columns,
     nodal_value,
     node_key,
+    read_columns,
 )
-from ._utilities import check_historical, get_flag, validate
+from ._utilities import validate
 from .process import Process
 
 DEFAULTS = {
@@ -100,18 +99,9 @@ class FromJsonCheckResultProcess(Process):
                 model, f"{model_part.FullName()}.{sub_name}", settings.Where("sub_model_part_name")
             )
         self.model_part = model_part
-        self.historical = settings["historical_value"].GetBool()
-        where = settings.Where("check_variables")
-        self.columns = nodal_columns(settings["check_variables"].GetStringArray(), where)
-        if self.historical:
-            for column in self.columns:
-                check_historical(model_part, column.variable, where)
-        self.gauss_columns = gauss_columns(
-            settings["gauss_points_check_variables"].GetStringArray(),
-            settings.Where("gauss_points_check_variables"),
+        self.historical, self.columns, self.gauss_columns, self.flag = read_columns(
+            settings, model_part, "check_variables", "gauss_points_check_variables"
         )
-        flag_name = settings["check_for_flag"].GetString()
-        self.flag = get_flag(flag_name, settings.Where("check_for_flag")) if flag_name else None
         self.input_file_name = settings["input_file_name"].GetString()
         self.tolerance = settings["tolerance"].GetDouble()
         self.relative_tolerance = settings["relative_tolerance"].GetDouble()

@@ -30,13 +30,12 @@ from ..model_part_lookup import get_model_part
 from ..parameters import Parameters
 from ._json_results import (
     element_key,
-    gauss_columns,
     gauss_values,
-    nodal_columns,
     nodal_value,
     node_key,
+    read_columns,
 )
-from ._utilities import check_historical, get_flag, validate
+from ._utilities import validate
 from .process import Process
 
 DEFAULTS = {
@@ -87,18 +86,9 @@ class JsonOutputProcess(Process):
                 f"output_file_name is empty\n  where:    {settings.Where('output_file_name')}\n"
                 '  fix:      name the file, e.g. "case_results.json"'
             )
-        self.historical = settings["historical_value"].GetBool()
-        where = settings.Where("output_variables")
-        self.columns = nodal_columns(settings["output_variables"].GetStringArray(), where)
-        if self.historical:
-            for column in self.columns:
-                check_historical(model_part, column.variable, where)
-        self.gauss_columns = gauss_columns(
-            settings["gauss_points_output_variables"].GetStringArray(),
-            settings.Where("gauss_points_output_variables"),
+        self.historical, self.columns, self.gauss_columns, self.flag = read_columns(
+            settings, model_part, "output_variables", "gauss_points_output_variables"
         )
-        flag_name = settings["check_for_flag"].GetString()
-        self.flag = get_flag(flag_name, settings.Where("check_for_flag")) if flag_name else None
         self.time_frequency = settings["time_frequency"].GetDouble()
         self.resultant_solution = settings["resultant_solution"].GetBool()
         self.use_node_coordinates = settings["use_node_coordinates"].GetBool()
