@@ -39,7 +39,7 @@ T Kernel(const Eigen::Matrix<T, 8, 3>& x) {
 }
 
 using AutoDiff = Eigen::AutoDiffScalar<Eigen::Matrix<double, kN, 1>>;
-const Eigen::Matrix<double, kN, 1>& Gradient(const contact_app::Dual<kN>& v) { return v.Derivatives(); }
+Eigen::Matrix<double, kN, 1> Gradient(const contact_app::Dual<kN>& v) { return v.Derivatives(); }
 const Eigen::Matrix<double, kN, 1>& Gradient(const AutoDiff& v) { return v.derivatives(); }
 
 template <class T, class TSeed>

@@ -40,6 +40,10 @@ TEST(Dual, test_dual_comparisons_use_the_value_and_sqrt_of_zero_is_finite) {
     EXPECT_TRUE(a != 3.0);
     EXPECT_TRUE(isfinite(sqrt(D2::Variable(0.0, 0))));
     EXPECT_EQ(Value(2.5), 2.5);
+    // Value-initialisation gives zero like double (default-initialisation leaves it unset, also like double).
+    const Dual<21> zero{};
+    EXPECT_EQ(zero.Value(), 0.0);
+    EXPECT_EQ(zero.Derivatives().cwiseAbs().sum(), 0.0);
 }
 
 TEST(Dual, test_dual_works_inside_eigen_fixed_size_algebra) {
