@@ -3,9 +3,11 @@
 Kratos opens every relative path (``input_filename``, ``materials_filename``, the json
 ``input_file_name``, ``output_path`` ...) against the working directory, and its test suites run
 with the working directory set to the folder of the settings file. ``contact-app run`` keeps that
-rule and adds one fallback so that a case runs from anywhere: when a path does not exist relative
-to the working directory but does relative to the folder of the ``ProjectParameters.json``, that
-one is used. Outputs (files or folders that may not exist yet) go to the working directory unless
+rule and adds one fallback so that a case runs from anywhere: when an input path does not exist
+relative to the working directory, it is looked up relative to the folder of the
+``ProjectParameters.json`` and then relative to each of that folder's ancestors (nearest first), so
+a Kratos test case, whose paths start from the suite's ``tests/`` folder, also runs when named from
+elsewhere. Outputs (files or folders that may not exist yet) go to the working directory unless
 only the settings file's folder has their parent directory.
 """
 
@@ -50,13 +52,14 @@ class PathResolver:
         path = Path(value)
         if path.exists():
             return value
-        if self._fallback_applies(path):
-            candidate = self.base_dir / path  # type: ignore[operator]
-            if candidate.exists():
-                return str(candidate)
         looked = [str(path.resolve())]
         if self._fallback_applies(path):
-            looked.append(str(self.base_dir / path))  # type: ignore[operator]
+            folders = [self.base_dir, *self.base_dir.parents]  # type: ignore[union-attr]
+            for folder in folders:
+                candidate = folder / path
+                if candidate.exists():
+                    return str(candidate)
+            looked.append(str(self.base_dir / path) + " (and the same below its parent folders)")
         raise InputError(
             f'{what} "{value}" not found\n  where:    {where}\n'
             f"  expected: an existing file; looked for {' and '.join(looked)}\n"

@@ -48,3 +48,21 @@ def test_outputs(layout: Path) -> None:
     assert paths.output_path("out/results.json") == "out/results.json"
     assert paths.output_path("sub/results.json") == str(layout / "sub" / "results.json")
     assert paths.output_path("nowhere/results.json") == "nowhere/results.json"
+
+
+def test_inputs_written_from_a_suite_folder_resolve_through_the_ancestors(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # Kratos layout: tests/<case_folder>/case_parameters.json names "case_folder/mesh".
+    suite = tmp_path / "tests"
+    (suite / "case_folder").mkdir(parents=True)
+    (suite / "case_folder" / "mesh.mdpa").write_text("")
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    monkeypatch.chdir(elsewhere)
+    paths = PathResolver(suite / "case_folder")
+    assert paths.input_path("case_folder/mesh.mdpa", "w") == str(
+        suite / "case_folder" / "mesh.mdpa"
+    )
+    with pytest.raises(ca.InputError, match="and the same below its parent folders"):
+        paths.input_path("case_folder/other.mdpa", "w")
