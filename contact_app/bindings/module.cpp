@@ -2,6 +2,7 @@
 #include <pybind11/pybind11.h>
 
 #include "contact_app/application.h"
+#include "custom_conditions/contact_condition_registration.h"
 #include "contact_app/bindings/bindings.h"
 #include "contact_app/kernel/exceptions.h"
 
@@ -37,6 +38,7 @@ PYBIND11_MODULE(_core, m) {
     using namespace contact_app::bindings;
     m.doc() = "Compiled core of contact_app (private: import contact_app instead).";
     contact_app::RegisterContactApplication();
+    contact_app::RegisterContactConditions();  // not in RegisterContactApplication: avoids a library cycle
     BindExceptions(m);
     BindVariables(m);
     BindFlags(m);

@@ -36,3 +36,12 @@ def test_exceptions_are_public_exception_classes(error: str) -> None:
     cls = getattr(ca, error)
     assert issubclass(cls, Exception)
     assert cls.__module__ == "contact_app" and cls.__name__ == error
+
+
+def test_package_registers_the_alm_frictionless_contact_conditions() -> None:
+    names = set(ca.registered_conditions())
+    for pair in ("2D2N", "3D3N", "3D4N", "3D3N4N", "3D4N3N"):
+        assert f"ALMFrictionlessMortarContactCondition{pair}" in names
+        assert f"ALMNVFrictionlessMortarContactCondition{pair}" in names
+    assert "ALMFrictionlessAxisymMortarContactCondition2D2N" in names
+    assert "ALMNVFrictionlessAxisymMortarContactCondition2D2N" in names

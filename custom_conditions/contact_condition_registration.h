@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace contact_app {
+
+/// One registered contact condition name, decoded (condition_classes.md, "Decoder").
+struct ContactConditionName {
+    std::string name;    ///< e.g. "ALMNVFrictionlessAxisymMortarContactCondition2D2N"
+    std::string family;  ///< "ALMFrictionless", "ALMFrictionlessComponents", "ALMFrictional", "PenaltyFrictionless", ...
+    bool normal_variation = false;
+    bool axisymmetric = false;
+    int dim = 0, num_slave = 0, num_master = 0;
+    int matrix_size = 0;  ///< local system size of the family for this pair
+};
+
+/// Every name of the decoder table whose family is implemented (the names RegisterContactConditions adds).
+const std::vector<ContactConditionName>& RegisteredContactConditionNames();
+
+/// Registers the prototypes of the implemented contact condition families in Registry<Condition>, from one
+/// table (method × NV × family × axisym × pair). Idempotent.
+void RegisterContactConditions();
+
+}  // namespace contact_app

@@ -1,0 +1,263 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_conditions/mortar_contact_condition.h"
+
+#include "automatic_differentiation/ad_helpers.h"
+#include "contact_app/application.h"
+#include "contact_app/kernel/exceptions.h"
+#include "custom_utilities/mortar_geometry_adapters.h"
+#include "custom_utilities/mortar_normals.h"
+
+namespace contact_app {
+namespace {
+
+/// Moves ∂/∂(pair coordinates, slave first) into ∂/∂q with q = [master u, slave u, λ].
+template <int TMatrixSize, int TSlaveDofs, int TMasterDofs>
+Dual<TMatrixSize> ToLocalDofs(const Dual<TSlaveDofs + TMasterDofs>& x) {
+    typename Dual<TMatrixSize>::Gradient gradient = Dual<TMatrixSize>::Gradient::Zero();
+    gradient.template segment<TSlaveDofs>(TMasterDofs) = x.Derivatives().template head<TSlaveDofs>();
+    gradient.template segment<TMasterDofs>(0) = x.Derivatives().template tail<TMasterDofs>();
+    return Dual<TMatrixSize>(x.Value(), gradient);
+}
+
+template <int TMatrixSize, int TSlaveDofs, int TMasterDofs, int R, int C>
+Eigen::Matrix<Dual<TMatrixSize>, R, C> ToLocalDofs(const Eigen::Matrix<Dual<TSlaveDofs + TMasterDofs>, R, C>& m) {
+    Eigen::Matrix<Dual<TMatrixSize>, R, C> result;
+    for (int r = 0; r < R; ++r)
+        for (int c = 0; c < C; ++c) result(r, c) = ToLocalDofs<TMatrixSize, TSlaveDofs, TMasterDofs>(m(r, c));
+    return result;
+}
+
+/// Same derivatives, value replaced: the NV normals keep the nodal NORMAL the search computed (mean over the
+/// adjacent faces) and take the derivative of this face's own normals (kratos_cpp_internals.md §3.2).
+template <int N, int R, int C>
+Eigen::Matrix<Dual<N>, R, C> WithValues(const Eigen::Matrix<Dual<N>, R, C>& m, const Eigen::Matrix<double, R, C>& v) {
+    Eigen::Matrix<Dual<N>, R, C> result;
+    for (int r = 0; r < R; ++r)
+        for (int c = 0; c < C; ++c) result(r, c) = Dual<N>(v(r, c), m(r, c).Derivatives());
+    return result;
+}
+
+const Variable<double>* const kDisplacementComponents[] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
+
+}  // namespace
+
+#define MORTAR_TEMPLATE template <int TDim, int TNS, FrictionalCase TF, bool TNV, int TNM>
+#define MORTAR_CLASS MortarContactCondition<TDim, TNS, TF, TNV, TNM>
+
+MORTAR_TEMPLATE
+void MORTAR_CLASS::Initialize(const ProcessInfo& rCurrentProcessInfo) {
+    PairedCondition::Initialize(rCurrentProcessInfo);
+    Set(ISOLATED, false);
+}
+
+MORTAR_TEMPLATE
+void MORTAR_CLASS::CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
+                                        const ProcessInfo& rCurrentProcessInfo) {
+    CalculateConditionSystem(&rLeftHandSideMatrix, &rRightHandSideVector, rCurrentProcessInfo);
+}
+
+MORTAR_TEMPLATE
+void MORTAR_CLASS::CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) {
+    Vector rhs;
+    CalculateConditionSystem(&rLeftHandSideMatrix, &rhs, rCurrentProcessInfo);
+}
+
+MORTAR_TEMPLATE
+void MORTAR_CLASS::CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo& rCurrentProcessInfo) {
+    CalculateConditionSystem(nullptr, &rRightHandSideVector, rCurrentProcessInfo);
+}
+
+MORTAR_TEMPLATE
+void MORTAR_CLASS::CalculateMassMatrix(Matrix& rMassMatrix, const ProcessInfo&) { rMassMatrix.resize(0, 0); }
+
+MORTAR_TEMPLATE
+void MORTAR_CLASS::CalculateDampingMatrix(Matrix& rDampingMatrix, const ProcessInfo&) { rDampingMatrix.resize(0, 0); }
+
+MORTAR_TEMPLATE
+void MORTAR_CLASS::CalculateOnIntegrationPoints(const Variable<double>&, std::vector<double>& rOutput,
+                                                const ProcessInfo&) {
+    const Geometry& slave = GetParentGeometry();
+    rOutput.assign(slave.IntegrationPoints(slave.DefaultIntegrationOrder()).size(), 0.0);
+}
+
+MORTAR_TEMPLATE
+void MORTAR_CLASS::CalculateOnIntegrationPoints(const Variable<Array3>&, std::vector<Array3>& rOutput,
+                                                const ProcessInfo&) {
+    const Geometry& slave = GetParentGeometry();
+    rOutput.assign(slave.IntegrationPoints(slave.DefaultIntegrationOrder()).size(), Array3::Zero());
+}
+
+MORTAR_TEMPLATE
+void MORTAR_CLASS::CalculateOnIntegrationPoints(const Variable<Vector>&, std::vector<Vector>& rOutput,
+                                                const ProcessInfo&) {
+    const Geometry& slave = GetParentGeometry();
+    rOutput.assign(slave.IntegrationPoints(slave.DefaultIntegrationOrder()).size(), Vector::Zero(TDim));
+}
+
+MORTAR_TEMPLATE
+InternalError MORTAR_CLASS::NotInBase(const char* method) const {
+    return InternalError(detail::Concat("MortarContactCondition::", method, " called on condition ", Id(),
+                                        ": the base class has no formulation family (this is a bug in contact_app;",
+                                        " please report it with the registered condition name)"));
+}
+
+MORTAR_TEMPLATE
+void MORTAR_CLASS::EquationIdVector(EquationIdVectorType&, const ProcessInfo&) const {
+    throw NotInBase("EquationIdVector");
+}
+
+MORTAR_TEMPLATE
+void MORTAR_CLASS::GetDofList(DofsVectorType&, const ProcessInfo&) const { throw NotInBase("GetDofList"); }
+
+MORTAR_TEMPLATE
+int MORTAR_CLASS::GetActiveInactiveValue() const {
+    throw NotInBase("GetActiveInactiveValue");
+}
+
+MORTAR_TEMPLATE
+typename MORTAR_CLASS::MultiplierVector MORTAR_CLASS::MultiplierValues() const {
+    throw NotInBase("MultiplierValues");
+}
+
+MORTAR_TEMPLATE
+void MORTAR_CLASS::AddResidual(const State<double>&, const ProcessInfo&, LocalVector<double>&) const {
+    throw NotInBase("AddResidual");
+}
+
+MORTAR_TEMPLATE
+void MORTAR_CLASS::AddResidual(const State<ADScalar>&, const ProcessInfo&, LocalVector<ADScalar>&) const {
+    throw NotInBase("AddResidual");
+}
+
+MORTAR_TEMPLATE
+int MORTAR_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
+    PairedCondition::Check(rCurrentProcessInfo);
+    const Geometry& slave = GetParentGeometry();
+    CONTACT_CHECK(static_cast<int>(slave.size()) == TNS && static_cast<int>(GetPairedGeometry().size()) == TNM,
+                  InputError, "condition ", Id(), " pairs a ", slave.size(), "-node slave with a ",
+                  GetPairedGeometry().size(), "-node master\n  expected: ", TNS, " and ", TNM,
+                  " nodes\n  fix: use the condition name whose suffix matches the two faces");
+    for (std::size_t i = 0; i < slave.size(); ++i) {
+        const Node& node = slave[i];
+        for (const VariableData* variable : {static_cast<const VariableData*>(&DISPLACEMENT),
+                                             static_cast<const VariableData*>(&WEIGHTED_GAP),
+                                             static_cast<const VariableData*>(&NORMAL)})
+            CONTACT_CHECK(node.SolutionStepsDataHas(*variable), InputError, "condition ", Id(), ": slave node ",
+                          node.Id(), " does not store ", variable->Name(), " as a historical variable",
+                          "\n  fix: add it to the model part's solution-step variables (the contact solver does)");
+        for (int k = 0; k < TDim; ++k)
+            CONTACT_CHECK(node.HasDofFor(*kDisplacementComponents[k]), InputError, "condition ", Id(),
+                          ": slave node ", node.Id(), " has no ", kDisplacementComponents[k]->Name(), " DoF",
+                          "\n  fix: add the DISPLACEMENT DoFs to the slave nodes");
+    }
+    return 0;
+}
+
+MORTAR_TEMPLATE
+MortarIntegrationSettings MORTAR_CLASS::IntegrationSettings() const {
+    MortarIntegrationSettings settings;
+    const auto& properties = pGetProperties();
+    if (properties && properties->Has(INTEGRATION_ORDER_CONTACT))
+        settings.integration_order = properties->GetValue(INTEGRATION_ORDER_CONTACT);
+    if (IsAxisymmetric()) {
+        const double thickness = properties ? properties->GetValue(THICKNESS) : 0.0;
+        CONTACT_CHECK(thickness > 0.0, InputError, "axisymmetric contact condition ", Id(),
+                      " needs a positive THICKNESS in its properties (got ", thickness, ")",
+                      "\n  fix: set THICKNESS on the pair properties (the thickness the axisymmetric solids divide by)");
+        settings.axisymmetric_thickness = thickness;
+    }
+    return settings;
+}
+
+MORTAR_TEMPLATE
+SegmentationSettings MORTAR_CLASS::SegmentationSettingsFrom(const ProcessInfo& rCurrentProcessInfo) const {
+    SegmentationSettings settings;
+    if (rCurrentProcessInfo.Has(DISTANCE_THRESHOLD))
+        settings.distance_threshold = rCurrentProcessInfo.GetValue(DISTANCE_THRESHOLD);
+    if (rCurrentProcessInfo.Has(ZERO_TOLERANCE_FACTOR))
+        settings.zero_tolerance_factor = rCurrentProcessInfo.GetValue(ZERO_TOLERANCE_FACTOR);
+    const auto& properties = pGetProperties();
+    if (properties && properties->Has(CONSIDER_TESSELLATION))
+        settings.consider_tessellation = properties->GetValue(CONSIDER_TESSELLATION);
+    return settings;
+}
+
+MORTAR_TEMPLATE
+void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const ProcessInfo& rCurrentProcessInfo) {
+    constexpr int slave_dofs = TDim * TNS, master_dofs = TDim * TNM;
+    if (pLhs) pLhs->setZero(MatrixSize, MatrixSize);
+    pRhs->setZero(MatrixSize);
+    if (Is(ISOLATED)) return;
+
+    const Geometry& slave = GetParentGeometry();
+    const Geometry& master = GetPairedGeometry();
+    const auto x1 = CurrentCoordinates<TDim, TNS>(slave);
+    const auto x2 = CurrentCoordinates<TDim, TNM>(master);
+    const SpatialVector<double, TDim> slave_normal = ToSpatialVector<TDim>(GetValue(NORMAL));
+    const auto normals = NodalNormals<TDim, TNS>(slave);
+    const MultiplierVector lambda = MultiplierValues();
+    const MortarIntegrationSettings integration = IntegrationSettings();
+    const SegmentationSettings segmentation = SegmentationSettingsFrom(rCurrentProcessInfo);
+
+    if (pLhs == nullptr) {  // residual only, in double
+        const MortarIntegrator<TDim, TNS, TNM, double> integrator(integration, segmentation);
+        const auto pair = IntegrateMortarPair<TDim, TNS, TNM>(integrator, x1, slave_normal, x2, normals, true);
+        if (!pair.used) return Set(ISOLATED, true);
+        const State<double> state{x1, x2, normals, pair.operators, lambda};
+        LocalVector<double> rhs = LocalVector<double>::Zero();
+        AddResidual(state, rCurrentProcessInfo, rhs);
+        *pRhs = rhs;
+        return;
+    }
+
+    // Residual and tangent: the pair operators in Dual<d(n_s+n_m)> (coordinates, slave first), then moved to
+    // Dual<MatrixSize> over q = [u2, u1, λ].
+    using Coordinate = Dual<NumCoordinateDofs>;
+    const auto seeded_x1 = Seed<NumCoordinateDofs>(x1, 0);
+    const auto seeded_x2 = Seed<NumCoordinateDofs>(x2, slave_dofs);
+    const MortarIntegrator<TDim, TNS, TNM, Coordinate> integrator(integration, segmentation);
+    State<ADScalar> state;
+    MortarPairIntegration<Coordinate, TDim, TNS, TNM> pair;
+    if constexpr (TNV) {
+        const auto nodal = WithValues(FaceNodalUnitNormals<TDim, TNS, Coordinate>(seeded_x1), normals);
+        const SpatialVector<Coordinate, TDim> center =
+            WithValues(FaceCenterUnitNormal<TDim, TNS, Coordinate>(seeded_x1), slave_normal);
+        pair = IntegrateMortarPair<TDim, TNS, TNM>(integrator, seeded_x1, center, seeded_x2, nodal, true);
+        state.normals = ToLocalDofs<MatrixSize, slave_dofs, master_dofs>(nodal);
+    } else {
+        pair = IntegrateMortarPair<TDim, TNS, TNM>(integrator, seeded_x1, slave_normal, seeded_x2, normals, true);
+        state.normals = normals.template cast<ADScalar>();
+    }
+    if (!pair.used) return Set(ISOLATED, true);
+    state.x1 = ToLocalDofs<MatrixSize, slave_dofs, master_dofs>(seeded_x1);
+    state.x2 = ToLocalDofs<MatrixSize, slave_dofs, master_dofs>(seeded_x2);
+    state.operators.D = ToLocalDofs<MatrixSize, slave_dofs, master_dofs>(pair.operators.D);
+    state.operators.M = ToLocalDofs<MatrixSize, slave_dofs, master_dofs>(pair.operators.M);
+    for (int i = 0; i < NumMultipliers; ++i)
+        state.multipliers[i] = ADScalar::Variable(lambda[i], NumCoordinateDofs + i);
+    LocalVector<ADScalar> rhs;
+    for (int i = 0; i < MatrixSize; ++i) rhs[i] = ADScalar(0.0);
+    AddResidual(state, rCurrentProcessInfo, rhs);
+    *pRhs = Values(rhs);
+    *pLhs = -Jacobian(rhs);
+}
+
+#undef MORTAR_TEMPLATE
+#undef MORTAR_CLASS
+
+// -- Explicit instantiations: the registered pairs of the implemented families, with and without NV --
+#define CONTACT_APP_INSTANTIATE_MORTAR(FAMILY)                                       \
+    template class MortarContactCondition<2, 2, FrictionalCase::FAMILY, false, 2>;   \
+    template class MortarContactCondition<2, 2, FrictionalCase::FAMILY, true, 2>;    \
+    template class MortarContactCondition<3, 3, FrictionalCase::FAMILY, false, 3>;   \
+    template class MortarContactCondition<3, 3, FrictionalCase::FAMILY, true, 3>;    \
+    template class MortarContactCondition<3, 4, FrictionalCase::FAMILY, false, 4>;   \
+    template class MortarContactCondition<3, 4, FrictionalCase::FAMILY, true, 4>;    \
+    template class MortarContactCondition<3, 3, FrictionalCase::FAMILY, false, 4>;   \
+    template class MortarContactCondition<3, 3, FrictionalCase::FAMILY, true, 4>;    \
+    template class MortarContactCondition<3, 4, FrictionalCase::FAMILY, false, 3>;   \
+    template class MortarContactCondition<3, 4, FrictionalCase::FAMILY, true, 3>;
+CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONLESS)
+#undef CONTACT_APP_INSTANTIATE_MORTAR
+
+}  // namespace contact_app

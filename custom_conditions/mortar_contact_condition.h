@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <Eigen/Core>
+
+#include "automatic_differentiation/dual.h"
+#include "contact_app/kernel/exceptions.h"
+#include "custom_conditions/paired_condition.h"
+#include "custom_utilities/mortar_operators.h"
+
+namespace contact_app {
+
+/// Formulation families (Kratos FrictionalCase).
+enum class FrictionalCase {
+    FRICTIONLESS = 0,
+    FRICTIONLESS_COMPONENTS = 1,
+    FRICTIONAL = 2,
+    FRICTIONLESS_PENALTY = 3,
+    FRICTIONAL_PENALTY = 4
+};
+
+/// Local system size of a family (condition_classes.md, "Template parameters").
+constexpr int MortarMatrixSize(int dim, int num_slave, FrictionalCase family, int num_master) {
+    switch (family) {
+        case FrictionalCase::FRICTIONLESS: return dim * (num_slave + num_master) + num_slave;
+        case FrictionalCase::FRICTIONLESS_COMPONENTS:
+        case FrictionalCase::FRICTIONAL: return dim * (2 * num_slave + num_master);
+        default: return dim * (num_slave + num_master);
+    }
+}
+
+/// Everything a family residual needs from one pair, in the scalar T (double or Dual<MatrixSize>):
+/// current coordinates, nodal normals, D and M, and the local unknowns q = [u2, u1, λ] (values).
+template <class T, int TDim, int TNumNodes, int TNumNodesMaster, int TMatrixSize>
+struct MortarPairState {
+    NodeCoordinates<T, TDim, TNumNodes> x1;
+    NodeCoordinates<T, TDim, TNumNodesMaster> x2;
+    NodeCoordinates<T, TDim, TNumNodes> normals;
+    MortarOperators<T, TNumNodes, TNumNodesMaster> operators;
+    /// Multiplier block of q (last TMatrixSize − d(n_s + n_m) entries).
+    Eigen::Matrix<T, TMatrixSize - TDim * (TNumNodes + TNumNodesMaster), 1> multipliers;
+};
+
+/// Common flow of the mortar contact conditions (Kratos MortarContactCondition): isolation, exact
+/// segmentation, dual basis Ae, cell and Gauss loops (custom_utilities/mortar_operators.h), then the family
+/// residual RHS(q) (the force on the bodies, kratos_residuals.md §0). The RHS alone is evaluated in double;
+/// the LHS = −∂RHS/∂q is the AD derivative of the same residual over q = [master u, slave u, λ], the normals
+/// held constant unless TNormalVariation. Reads INTEGRATION_ORDER_CONTACT, CONSIDER_TESSELLATION, THICKNESS
+/// (axisymmetric) from the Properties and DISTANCE_THRESHOLD, ZERO_TOLERANCE_FACTOR from the ProcessInfo.
+/// Not registered itself: DoFs, state encoding and residual come from the families.
+template <int TDim, int TNumNodes, FrictionalCase TFrictional, bool TNormalVariation, int TNumNodesMaster = TNumNodes>
+class MortarContactCondition : public PairedCondition {
+public:
+    static constexpr int NumCoordinateDofs = TDim * (TNumNodes + TNumNodesMaster);
+    static constexpr int MatrixSize = MortarMatrixSize(TDim, TNumNodes, TFrictional, TNumNodesMaster);
+    static constexpr int NumMultipliers = MatrixSize - NumCoordinateDofs;
+    using ADScalar = Dual<MatrixSize>;
+    using MultiplierVector = Eigen::Matrix<double, NumMultipliers, 1>;
+    template <class T>
+    using State = MortarPairState<T, TDim, TNumNodes, TNumNodesMaster, MatrixSize>;
+    template <class T>
+    using LocalVector = Eigen::Matrix<T, MatrixSize, 1>;
+
+    using PairedCondition::PairedCondition;
+
+    /// Resets ISOLATED (the search rebuilt the pair).
+    void Initialize(const ProcessInfo& rCurrentProcessInfo) override;
+    /// @param[out] rLeftHandSideMatrix MatrixSize², −∂RHS/∂q; @param[out] rRightHandSideVector MatrixSize
+    void CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
+                              const ProcessInfo& rCurrentProcessInfo) override;
+    void CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) override;
+    /// Double evaluation only (no derivative work).
+    void CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo& rCurrentProcessInfo) override;
+    /// 0×0: no inertia.
+    void CalculateMassMatrix(Matrix& rMassMatrix, const ProcessInfo& rCurrentProcessInfo) override;
+    /// 0×0: no damping.
+    void CalculateDampingMatrix(Matrix& rDampingMatrix, const ProcessInfo& rCurrentProcessInfo) override;
+    /// Zeros, one per integration point of the slave face (results live on the nodes).
+    void CalculateOnIntegrationPoints(const Variable<double>& rVariable, std::vector<double>& rOutput,
+                                      const ProcessInfo& rCurrentProcessInfo) override;
+    void CalculateOnIntegrationPoints(const Variable<Array3>& rVariable, std::vector<Array3>& rOutput,
+                                      const ProcessInfo& rCurrentProcessInfo) override;
+    void CalculateOnIntegrationPoints(const Variable<Vector>& rVariable, std::vector<Vector>& rOutput,
+                                      const ProcessInfo& rCurrentProcessInfo) override;
+    /// @throws InternalError (families implement it)
+    void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
+    /// @throws InternalError (families implement it)
+    void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
+    /// Integer state of the slave nodes (family encoding). @throws InternalError in the base
+    virtual int GetActiveInactiveValue() const;
+    /// @throws InputError: unpaired, or a slave node lacks DISPLACEMENT / WEIGHTED_GAP / NORMAL (historical)
+    ///         or the DISPLACEMENT DoFs
+    int Check(const ProcessInfo& rCurrentProcessInfo) const override;
+
+    virtual bool IsAxisymmetric() const { return false; }
+    /// Mortar integration and segmentation settings from the Properties and the ProcessInfo.
+    MortarIntegrationSettings IntegrationSettings() const;
+    SegmentationSettings SegmentationSettingsFrom(const ProcessInfo& rCurrentProcessInfo) const;
+
+protected:
+    /// The multiplier values of the slave nodes (the λ block of q). @throws InternalError in the base
+    virtual MultiplierVector MultiplierValues() const;
+    /// Adds the family RHS(q) to @p rhs (zeroed by the caller). @throws InternalError in the base
+    virtual void AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
+                             LocalVector<double>& rhs) const;
+    virtual void AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
+                             LocalVector<ADScalar>& rhs) const;
+
+private:
+    void CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const ProcessInfo& rCurrentProcessInfo);
+    /// The InternalError raised by the methods only the families implement.
+    InternalError NotInBase(const char* method) const;
+};
+
+}  // namespace contact_app

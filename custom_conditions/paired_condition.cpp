@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_conditions/paired_condition.h"
+
+#include <sstream>
+
+#include "contact_app/application.h"
+#include "contact_app/kernel/exceptions.h"
+#include "contact_app/kernel/geometries/coupling_geometry.h"
+
+namespace contact_app {
+namespace {
+
+Geometry::Pointer PairGeometry(Geometry::Pointer slave, Geometry::Pointer master) {
+    CONTACT_CHECK(slave != nullptr, InputError, "PairedCondition: the slave geometry is null",
+                  "\n  fix: pass the slave face of the pair");
+    if (!master) return slave;
+    return std::make_shared<CouplingGeometry>(std::move(slave), std::move(master));
+}
+
+}  // namespace
+
+PairedCondition::PairedCondition(IndexType id, Geometry::Pointer geometry, Properties::Pointer properties)
+    : Condition(id, std::move(geometry), std::move(properties)) {}
+
+PairedCondition::PairedCondition(IndexType id, Geometry::Pointer slave, Properties::Pointer properties,
+                                 Geometry::Pointer master)
+    : Condition(id, PairGeometry(std::move(slave), std::move(master)), std::move(properties)) {}
+
+Condition::Pointer PairedCondition::Create(IndexType new_id, const NodesArrayType& nodes,
+                                           Properties::Pointer properties) const {
+    return Create(new_id, pGetParentGeometry()->Create(nodes), std::move(properties), nullptr);
+}
+
+Condition::Pointer PairedCondition::Create(IndexType new_id, Geometry::Pointer geometry,
+                                           Properties::Pointer properties) const {
+    if (geometry && geometry->NumberOfGeometryParts() == 2)
+        return Create(new_id, geometry->pGetGeometryPart(0), std::move(properties), geometry->pGetGeometryPart(1));
+    return Create(new_id, std::move(geometry), std::move(properties), nullptr);
+}
+
+Condition::Pointer PairedCondition::Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
+                                           Geometry::Pointer master) const {
+    return std::make_shared<PairedCondition>(new_id, std::move(slave), std::move(properties), std::move(master));
+}
+
+Geometry::Pointer PairedCondition::pGetParentGeometry() const {
+    return HasPairedGeometry() ? GetGeometry().pGetGeometryPart(0) : pGetGeometry();
+}
+
+Geometry::Pointer PairedCondition::pGetPairedGeometry() const {
+    CONTACT_CHECK(HasPairedGeometry(), InputError, "condition ", Id(),
+                  " has no paired master geometry (YOU HAVE NOT INITIALIZED THE PAIR GEOMETRY)",
+                  "\n  expected: a master face assigned by the contact search (Create(id, slave, properties, master))",
+                  "\n  fix: do not list contact pair conditions in the .mdpa; let the contact search process build",
+                  " them from the slave and master skins");
+    return GetGeometry().pGetGeometryPart(1);
+}
+
+void PairedCondition::UpdatePairedNormal() {
+    if (!HasPairedGeometry()) return;
+    mPairedNormal = GetPairedGeometry().UnitNormal(Array3::Zero());
+}
+
+void PairedCondition::Initialize(const ProcessInfo& rCurrentProcessInfo) {
+    Condition::Initialize(rCurrentProcessInfo);
+    UpdatePairedNormal();
+}
+
+void PairedCondition::InitializeSolutionStep(const ProcessInfo& rCurrentProcessInfo) {
+    Condition::InitializeSolutionStep(rCurrentProcessInfo);
+    UpdatePairedNormal();
+}
+
+void PairedCondition::InitializeNonLinearIteration(const ProcessInfo& rCurrentProcessInfo) {
+    Condition::InitializeNonLinearIteration(rCurrentProcessInfo);
+    // 0 = NO_DERIVATIVES_COMPUTATION: the master normal stays the one of the start of the step.
+    if (rCurrentProcessInfo.GetValue(CONSIDER_NORMAL_VARIATION) != 0) UpdatePairedNormal();
+}
+
+int PairedCondition::Check(const ProcessInfo& rCurrentProcessInfo) const {
+    pGetPairedGeometry();  // throws the explanatory message when unpaired
+    return Condition::Check(rCurrentProcessInfo);
+}
+
+std::string PairedCondition::Info() const {
+    std::ostringstream out;
+    out << "PairedCondition #" << Id() << " (slave " << GetParentGeometry().Name() << ", master "
+        << (HasPairedGeometry() ? GetPairedGeometry().Name() : std::string("none")) << ")";
+    return out.str();
+}
+
+}  // namespace contact_app

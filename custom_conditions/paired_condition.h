@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include "contact_app/kernel/condition.h"
+
+namespace contact_app {
+
+/// A condition owning a slave face and a paired master face (Kratos PairedCondition): with a master the
+/// geometry is a CouplingGeometry {slave, master}; without one (an .mdpa-created condition) it is the slave
+/// face alone and Check() fails. The unit normal of the master face at its centre is cached in
+/// mPairedNormal: refreshed in Initialize / InitializeSolutionStep and, when CONSIDER_NORMAL_VARIATION ≠ 0
+/// (NO_DERIVATIVES_COMPUTATION), in InitializeNonLinearIteration. Reference: condition_classes.md.
+class PairedCondition : public Condition {
+public:
+    /// @param[in] geometry a CouplingGeometry {slave, master} or a bare slave face (shared, not null)
+    PairedCondition(IndexType id, Geometry::Pointer geometry, Properties::Pointer properties = nullptr);
+    /// @param[in] slave slave face; @param[in] master master face (may be null: unpaired condition)
+    PairedCondition(IndexType id, Geometry::Pointer slave, Properties::Pointer properties, Geometry::Pointer master);
+
+    /// The prototype's slave geometry type on @p nodes, without master (Check() then fails).
+    Pointer Create(IndexType new_id, const NodesArrayType& nodes, Properties::Pointer properties) const override;
+    /// @p geometry is a CouplingGeometry {slave, master} or a bare slave face.
+    Pointer Create(IndexType new_id, Geometry::Pointer geometry, Properties::Pointer properties) const override;
+    /// The pair constructor the contact search uses (slave face, properties, master face).
+    virtual Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
+                           Geometry::Pointer master) const;
+
+    void Initialize(const ProcessInfo& rCurrentProcessInfo) override;
+    void InitializeSolutionStep(const ProcessInfo& rCurrentProcessInfo) override;
+    void InitializeNonLinearIteration(const ProcessInfo& rCurrentProcessInfo) override;
+    /// @throws InputError naming the condition id when no master geometry was paired (the .mdpa case)
+    int Check(const ProcessInfo& rCurrentProcessInfo) const override;
+    std::string Info() const override;
+
+    /// Whether a master face is paired.
+    bool HasPairedGeometry() const { return GetGeometry().NumberOfGeometryParts() == 2; }
+    /// The slave face (CouplingGeometry part 0).
+    const Geometry& GetParentGeometry() const { return *pGetParentGeometry(); }
+    Geometry::Pointer pGetParentGeometry() const;
+    /// The master face (CouplingGeometry part 1). @throws InputError if none is paired
+    const Geometry& GetPairedGeometry() const { return *pGetPairedGeometry(); }
+    Geometry::Pointer pGetPairedGeometry() const;
+    const Array3& GetPairedNormal() const { return mPairedNormal; }
+    void SetPairedNormal(const Array3& normal) { mPairedNormal = normal; }
+
+private:
+    void UpdatePairedNormal();
+    Array3 mPairedNormal = Array3::Zero();
+};
+
+}  // namespace contact_app

@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// Shared fixtures of the contact condition tests: a model part with the ALM variables and DoFs, pairs
+/// built from coordinate tables, the registered names.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "contact_app/application.h"
+#include "contact_app/kernel/geometries/geometry_factory.h"
+#include "contact_app/kernel/model.h"
+#include "contact_app/kernel/registry.h"
+#include "custom_conditions/contact_condition_registration.h"
+#include "custom_conditions/paired_condition.h"
+
+namespace contact_app::testing {
+
+inline std::vector<std::string> RegisteredContactNames() {
+    std::vector<std::string> names;
+    for (const auto& row : RegisteredContactConditionNames()) names.push_back(row.name);
+    return names;
+}
+
+inline const ContactConditionName& DecodedName(const std::string& name) {
+    for (const auto& row : RegisteredContactConditionNames())
+        if (row.name == name) return row;
+    throw std::runtime_error("not registered: " + name);
+}
+
+inline std::string FaceGeometryName(int dim, int num_nodes) {
+    return dim == 2 ? "Line2D2" : (num_nodes == 3 ? "Triangle3D3" : "Quadrilateral3D4");
+}
+
+/// A model part with the historical variables and DoFs of the ALM frictionless solver.
+class ContactPairModel {
+public:
+    ContactPairModel() {
+        RegisterContactApplication();
+        RegisterContactConditions();
+        part = &model.CreateModelPart("Contact");
+        for (const VariableData* v : {static_cast<const VariableData*>(&DISPLACEMENT),
+                                      static_cast<const VariableData*>(&NORMAL),
+                                      static_cast<const VariableData*>(&WEIGHTED_GAP),
+                                      static_cast<const VariableData*>(&LAGRANGE_MULTIPLIER_CONTACT_PRESSURE)})
+            part->AddNodalSolutionStepVariable(*v);
+        properties = part->CreateNewProperties(1);
+    }
+
+    Node& AddNode(IndexType id, const Eigen::VectorXd& x) {
+        auto node = part->CreateNewNode(id, x[0], x[1], x.size() > 2 ? x[2] : 0.0);
+        node->AddDof(DISPLACEMENT_X);
+        node->AddDof(DISPLACEMENT_Y);
+        node->AddDof(DISPLACEMENT_Z);
+        node->AddDof(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE);
+        return *node;
+    }
+
+    /// The pair condition @p name on new nodes: slave rows of @p slave (ids 1..n_s), master rows of @p master
+    /// (ids n_s+1..); historical NORMAL of the slave nodes and condition NORMAL from the slave face.
+    std::shared_ptr<PairedCondition> MakePair(const std::string& name, const Eigen::MatrixXd& slave,
+                                              const Eigen::MatrixXd& master, IndexType id = 1) {
+        const auto& row = DecodedName(name);
+        Geometry::PointsArrayType s, m;
+        for (int i = 0; i < slave.rows(); ++i) {
+            AddNode(i + 1, slave.row(i).transpose());
+            s.push_back(part->pGetNode(i + 1));
+        }
+        for (int i = 0; i < master.rows(); ++i) {
+            AddNode(slave.rows() + i + 1, master.row(i).transpose());
+            m.push_back(part->pGetNode(slave.rows() + i + 1));
+        }
+        const auto& prototype = dynamic_cast<const PairedCondition&>(Registry<Condition>::Instance().Get(name));
+        auto condition = std::dynamic_pointer_cast<PairedCondition>(
+            prototype.Create(id, CreateGeometry(FaceGeometryName(row.dim, row.num_slave), s), properties,
+                             CreateGeometry(FaceGeometryName(row.dim, row.num_master), m)));
+        return condition;
+    }
+
+    Model model;
+    ModelPart* part = nullptr;
+    Properties::Pointer properties;
+};
+
+}  // namespace contact_app::testing

@@ -1,0 +1,314 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// ALM frictionless mortar conditions: sizes, DoF order, FD tangent, flat-pair gap and RHS, for every registered name.
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <random>
+
+#include "../custom_utilities/mortar_test_utilities.h"
+#include "contact_condition_test_utilities.h"
+#include "custom_conditions/mortar_contact_condition.h"
+#include "custom_utilities/mortar_normals.h"
+
+namespace contact_app::testing {
+namespace {
+
+/// Nodal (rows) and centre unit normals of the slave face from its current coordinates.
+void FaceNormals(const Geometry& face, int dim, Eigen::MatrixXd& nodal, Eigen::VectorXd& center) {
+    const int n = static_cast<int>(face.size());
+    Eigen::MatrixXd x(n, dim);
+    for (int i = 0; i < n; ++i) x.row(i) = face[i].Coordinates().head(dim).transpose();
+    if (dim == 2) {
+        const NodeCoordinates<double, 2, 2> c = x;
+        nodal = FaceNodalUnitNormals<2, 2, double>(c);
+        center = FaceCenterUnitNormal<2, 2, double>(c);
+    } else if (n == 3) {
+        const NodeCoordinates<double, 3, 3> c = x;
+        nodal = FaceNodalUnitNormals<3, 3, double>(c);
+        center = FaceCenterUnitNormal<3, 3, double>(c);
+    } else {
+        const NodeCoordinates<double, 3, 4> c = x;
+        nodal = FaceNodalUnitNormals<3, 4, double>(c);
+        center = FaceCenterUnitNormal<3, 4, double>(c);
+    }
+}
+
+/// Sets the slave nodal NORMAL (historical) and the pair NORMAL as the search/criteria would for one face.
+void UpdateNormals(PairedCondition& pair, int dim) {
+    Eigen::MatrixXd nodal;
+    Eigen::VectorXd center;
+    FaceNormals(pair.GetParentGeometry(), dim, nodal, center);
+    auto& slave = const_cast<Geometry&>(pair.GetParentGeometry());
+    for (std::size_t i = 0; i < slave.size(); ++i) {
+        Array3 n = Array3::Zero();
+        n.head(dim) = nodal.row(i).transpose();
+        slave[i].FastGetSolutionStepValue(NORMAL) = n;
+    }
+    Array3 c = Array3::Zero();
+    c.head(dim) = center;
+    pair.SetValue(NORMAL, c);
+}
+
+template <class TPair>
+void RandomCoordinates(std::mt19937& rng, bool axisym, Eigen::MatrixXd& slave, Eigen::MatrixXd& master) {
+    const auto pair = MakeRandomPair<TPair>(rng, 0.3, !axisym);
+    slave = pair.slave;
+    master = pair.master;
+    if (axisym) {  // positive radius
+        slave.col(0).array() += 2.0;
+        master.col(0).array() += 2.0;
+    }
+}
+
+void RandomPairCoordinates(const ContactConditionName& row, std::mt19937& rng, Eigen::MatrixXd& s, Eigen::MatrixXd& m) {
+    if (row.dim == 2) RandomCoordinates<MortarPairTraits<2, 2, 2>>(rng, row.axisymmetric, s, m);
+    else if (row.num_slave == 3 && row.num_master == 3) RandomCoordinates<MortarPairTraits<3, 3, 3>>(rng, false, s, m);
+    else if (row.num_slave == 4 && row.num_master == 4) RandomCoordinates<MortarPairTraits<3, 4, 4>>(rng, false, s, m);
+    else if (row.num_slave == 3) RandomCoordinates<MortarPairTraits<3, 3, 4>>(rng, false, s, m);
+    else RandomCoordinates<MortarPairTraits<3, 4, 3>>(rng, false, s, m);
+}
+
+/// Local unknown @p q of the pair: (node, variable) in the order [master u, slave u, λ].
+struct LocalDof {
+    Node* node;
+    int component;  ///< 0..2 displacement, −1 multiplier
+};
+
+std::vector<LocalDof> LocalDofs(PairedCondition& pair, int dim) {
+    std::vector<LocalDof> dofs;
+    auto& master = const_cast<Geometry&>(pair.GetPairedGeometry());
+    auto& slave = const_cast<Geometry&>(pair.GetParentGeometry());
+    for (std::size_t l = 0; l < master.size(); ++l)
+        for (int c = 0; c < dim; ++c) dofs.push_back({&master[l], c});
+    for (std::size_t j = 0; j < slave.size(); ++j)
+        for (int c = 0; c < dim; ++c) dofs.push_back({&slave[j], c});
+    for (std::size_t j = 0; j < slave.size(); ++j) dofs.push_back({&slave[j], -1});
+    return dofs;
+}
+
+void Perturb(const LocalDof& dof, double h) {
+    if (dof.component < 0) {
+        dof.node->FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE) += h;
+    } else {
+        dof.node->Coordinates()[dof.component] += h;
+        dof.node->FastGetSolutionStepValue(DISPLACEMENT)[dof.component] += h;
+    }
+}
+
+/// max over rows of ‖LHS_i − FD_i‖ / max(‖LHS_i‖, 1e−3·max_k ‖LHS_k‖): every row is measured against its own
+/// size (no entry dominates); rows that vanish analytically (D is diagonal with dual multipliers) are compared
+/// at 1e−3 of the largest row, above the FD round-off.
+double RowwiseRelativeError(const Matrix& lhs, const Matrix& fd) {
+    double worst = 0.0;
+    const double floor = 1e-3 * lhs.rowwise().norm().maxCoeff();
+    for (Eigen::Index i = 0; i < lhs.rows(); ++i)
+        worst = std::max(worst, (lhs.row(i) - fd.row(i)).norm() / std::max(lhs.row(i).norm(), floor));
+    return worst;
+}
+
+/// GetActiveInactiveValue through the mortar base of whichever registered instantiation @p c is.
+int ActiveInactiveValue(const Condition* c) {
+#define CONTACT_APP_TRY(D, NS, NM)                                                                              \
+    if (auto p = dynamic_cast<const MortarContactCondition<D, NS, FrictionalCase::FRICTIONLESS, false, NM>*>(c)) \
+        return p->GetActiveInactiveValue();                                                                     \
+    if (auto p = dynamic_cast<const MortarContactCondition<D, NS, FrictionalCase::FRICTIONLESS, true, NM>*>(c))  \
+        return p->GetActiveInactiveValue();
+    CONTACT_APP_TRY(2, 2, 2)
+    CONTACT_APP_TRY(3, 3, 3)
+    CONTACT_APP_TRY(3, 4, 4)
+    CONTACT_APP_TRY(3, 3, 4)
+    CONTACT_APP_TRY(3, 4, 3)
+#undef CONTACT_APP_TRY
+    return -1;
+}
+
+class AlmFrictionlessNames : public ::testing::TestWithParam<std::string> {};
+
+const std::map<std::string, int> kSpecSizes = {{"2D2N", 10}, {"3D3N", 21}, {"3D4N", 28}, {"3D3N4N", 24}, {"3D4N3N", 25}};
+
+std::string Suffix(const std::string& name) { return name.substr(name.find("Condition") + 9); }
+
+TEST_P(AlmFrictionlessNames, LocalSystemSizesAndDofOrderMatchTheSpec) {
+    ContactPairModel model;
+    const auto& row = DecodedName(GetParam());
+    std::mt19937 rng(7);
+    Eigen::MatrixXd s, m;
+    RandomPairCoordinates(row, rng, s, m);
+    auto pair = model.MakePair(GetParam(), s, m);
+    model.properties->SetValue(THICKNESS, 1.5);
+    UpdateNormals(*pair, row.dim);
+    ProcessInfo info;
+    info.SetValue(SCALE_FACTOR, 1.0);
+    for (std::size_t j = 0; j < pair->GetParentGeometry().size(); ++j)
+        const_cast<Node&>(pair->GetParentGeometry()[j]).SetValue(INITIAL_PENALTY, 10.0);
+    Matrix lhs;
+    Vector rhs;
+    pair->CalculateLocalSystem(lhs, rhs, info);
+    EXPECT_EQ(row.matrix_size, kSpecSizes.at(Suffix(GetParam())));
+    EXPECT_EQ(lhs.rows(), row.matrix_size);
+    EXPECT_EQ(lhs.cols(), row.matrix_size);
+    EXPECT_EQ(rhs.size(), row.matrix_size);
+    DofsVectorType dofs;
+    EquationIdVectorType ids;
+    pair->GetDofList(dofs, info);
+    pair->EquationIdVector(ids, info);
+    ASSERT_EQ(static_cast<int>(dofs.size()), row.matrix_size);
+    ASSERT_EQ(static_cast<int>(ids.size()), row.matrix_size);
+    const auto expected = LocalDofs(*pair, row.dim);
+    for (int q = 0; q < row.matrix_size; ++q) {
+        EXPECT_EQ(dofs[q]->Id(), expected[q].node->Id()) << q;
+        const VariableData& v = expected[q].component < 0 ? static_cast<const VariableData&>(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE)
+                                                          : static_cast<const VariableData&>(*std::array<const Variable<double>*, 3>{
+                                                                &DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z}[expected[q].component]);
+        EXPECT_EQ(&dofs[q]->GetVariable(), &v) << q;
+    }
+    Matrix mass, damping;
+    pair->CalculateMassMatrix(mass, info);
+    pair->CalculateDampingMatrix(damping, info);
+    EXPECT_EQ(mass.size(), 0);
+    EXPECT_EQ(damping.size(), 0);
+    std::vector<double> gp;
+    pair->CalculateOnIntegrationPoints(WEIGHTED_GAP, gp, info);
+    EXPECT_FALSE(gp.empty());
+    for (double v : gp) EXPECT_EQ(v, 0.0);
+    // Active/inactive encoding: Σ 2^i over ACTIVE slave nodes.
+    auto& slave = const_cast<Geometry&>(pair->GetParentGeometry());
+    int expected_value = 0;
+    for (std::size_t j = 0; j < slave.size(); ++j) {
+        slave[j].Set(ACTIVE, j % 2 == 0);
+        if (j % 2 == 0) expected_value += 1 << j;
+    }
+    const int value = ActiveInactiveValue(pair.get());
+    EXPECT_EQ(value, expected_value);
+}
+
+TEST_P(AlmFrictionlessNames, TangentIsTheCentralDifferenceOfMinusRhs) {
+    const auto& row = DecodedName(GetParam());
+    double worst = 0.0;
+    for (int state = 0; state < 3; ++state) {
+        ContactPairModel model;
+        std::mt19937 rng(100 + state);
+        Eigen::MatrixXd s, m;
+        RandomPairCoordinates(row, rng, s, m);
+        auto pair = model.MakePair(GetParam(), s, m);
+        model.properties->SetValue(INTEGRATION_ORDER_CONTACT, 3);
+        model.properties->SetValue(THICKNESS, 1.5);
+        UpdateNormals(*pair, row.dim);
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        ProcessInfo info;
+        info.SetValue(SCALE_FACTOR, 1.5);
+        info.SetValue(CONSIDER_NORMAL_VARIATION, row.normal_variation ? 2 : 0);
+        auto& slave = const_cast<Geometry&>(pair->GetParentGeometry());
+        for (std::size_t j = 0; j < slave.size(); ++j) {
+            slave[j].Set(ACTIVE, state == 2 || (j + state) % 2 == 0);  // mixed in states 0 and 1, all active in 2
+            slave[j].SetValue(INITIAL_PENALTY, 5.0 + 10.0 * u(rng));
+            if (j % 2 == 1) slave[j].SetValue(DYNAMIC_FACTOR, 0.5 + 0.5 * u(rng));
+            slave[j].FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE) = -u(rng);
+        }
+        pair->Initialize(info);
+        Matrix lhs;
+        Vector rhs;
+        pair->CalculateLocalSystem(lhs, rhs, info);
+        ASSERT_FALSE(pair->Is(ISOLATED)) << GetParam() << " state " << state;
+        Vector rhs_only;
+        pair->CalculateRightHandSide(rhs_only, info);
+        EXPECT_LT((rhs_only - rhs).norm(), 1e-12 * (1.0 + rhs.norm()));
+        const auto dofs = LocalDofs(*pair, row.dim);
+        const double h = 1e-5;
+        Matrix fd(row.matrix_size, row.matrix_size);
+        for (int q = 0; q < row.matrix_size; ++q) {
+            Vector plus, minus;
+            Perturb(dofs[q], h);
+            if (row.normal_variation) UpdateNormals(*pair, row.dim);
+            pair->CalculateRightHandSide(plus, info);
+            Perturb(dofs[q], -2.0 * h);
+            if (row.normal_variation) UpdateNormals(*pair, row.dim);
+            pair->CalculateRightHandSide(minus, info);
+            Perturb(dofs[q], h);
+            if (row.normal_variation) UpdateNormals(*pair, row.dim);
+            fd.col(q) = -(plus - minus) / (2.0 * h);
+        }
+        ASSERT_FALSE(pair->Is(ISOLATED));
+        ASSERT_GT(lhs.norm(), 0.0);
+        const double error = RowwiseRelativeError(lhs, fd);
+        worst = std::max(worst, error);
+        EXPECT_LT(error, 1e-6) << GetParam() << " state " << state;
+    }
+    std::printf("[ FD       ] %-52s worst row-wise relative error %.2e\n", GetParam().c_str(), worst);
+}
+
+/// Matching flat faces at a uniform gap g, all nodes active: WEIGHTED_GAP_j = g ∫N_j and the RHS of §3.1.
+class MatchingPairNames : public ::testing::TestWithParam<std::string> {};
+
+std::vector<std::string> MatchingPairRegisteredNames() {
+    std::vector<std::string> names;
+    for (const auto& row : RegisteredContactConditionNames())
+        if (row.num_slave == row.num_master) names.push_back(row.name);
+    return names;
+}
+
+TEST_P(MatchingPairNames, MatchingFlatPairUnderUniformGap) {
+    const auto& row = DecodedName(GetParam());
+    const double g = 0.01, k = 2.0, eps = 30.0;
+    Eigen::MatrixXd s(row.num_slave, row.dim), m(row.num_master, row.dim);
+    if (row.dim == 2) {
+        s << 3.0, 0.0, 2.0, 0.0;  // normal +y, length 1
+        m << 2.0, g, 3.0, g;
+    } else if (row.num_slave == 3) {
+        s << 0, 0, 0, 1, 0, 0, 0, 1, 0;
+        m << 0, 0, g, 0, 1, g, 1, 0, g;
+    } else {
+        s << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
+        m << 0, 0, g, 0, 1, g, 1, 1, g, 1, 0, g;
+    }
+    ContactPairModel model;
+    auto pair = model.MakePair(GetParam(), s, m);
+    model.properties->SetValue(THICKNESS, 1.0);
+    UpdateNormals(*pair, row.dim);
+    ProcessInfo info;
+    info.SetValue(SCALE_FACTOR, k);
+    auto& slave = const_cast<Geometry&>(pair->GetParentGeometry());
+    const auto& master = pair->GetPairedGeometry();
+    std::vector<double> lambda(row.num_slave);
+    for (int j = 0; j < row.num_slave; ++j) {
+        slave[j].Set(ACTIVE, true);
+        slave[j].SetValue(INITIAL_PENALTY, eps);
+        lambda[j] = -0.1 * (j + 1);
+        slave[j].FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE) = lambda[j];
+    }
+    pair->Initialize(info);
+    pair->AddExplicitContribution(info);
+    // ∫N_j: plane faces area/n (area 1, or the triangle 1/2); axisymmetric line: ∫ 2π r / t N_j ds.
+    std::vector<double> nodal_measure(row.num_slave);
+    for (int j = 0; j < row.num_slave; ++j) {
+        if (row.axisymmetric) nodal_measure[j] = 2.0 * M_PI * (slave[j].X() / 3.0 + slave[1 - j].X() / 6.0);
+        else nodal_measure[j] = (row.num_slave == 3 ? 0.5 : 1.0) / row.num_slave;
+        EXPECT_NEAR(slave[j].FastGetSolutionStepValue(WEIGHTED_GAP), g * nodal_measure[j], 1e-12) << j;
+    }
+    Vector rhs;
+    pair->CalculateRightHandSide(rhs, info);
+    const int d = row.dim, nm = row.num_master, ns = row.num_slave;
+    Vector expected = Vector::Zero(row.matrix_size);
+    for (int j = 0; j < ns; ++j) {
+        const double gap = g * nodal_measure[j];
+        const double force = k * lambda[j] + eps * gap;
+        const Array3 n = slave[j].FastGetSolutionStepValue(NORMAL);
+        int l = 0;
+        while ((master[l].Coordinates() - slave[j].Coordinates()).head(d - 0).cwiseAbs().maxCoeff() > 2 * g) ++l;
+        for (int c = 0; c < d; ++c) {
+            expected[d * nm + j * d + c] += force * nodal_measure[j] * n[c];
+            expected[l * d + c] -= force * nodal_measure[j] * n[c];
+        }
+        expected[d * (nm + ns) + j] = k * gap;
+    }
+    EXPECT_LT((rhs - expected).norm(), 1e-10 * (1.0 + expected.norm())) << "rhs\n" << rhs.transpose() << "\nexpected\n"
+                                                                     << expected.transpose();
+}
+
+INSTANTIATE_TEST_SUITE_P(Registered, MatchingPairNames, ::testing::ValuesIn(MatchingPairRegisteredNames()),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+INSTANTIATE_TEST_SUITE_P(Registered, AlmFrictionlessNames, ::testing::ValuesIn(RegisteredContactNames()),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+
+}  // namespace
+}  // namespace contact_app::testing
