@@ -1,62 +1,38 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_conditions/alm_frictionless_mortar_contact_condition.h"
 
-#include "contact_app/application.h"
-#include "contact_app/kernel/exceptions.h"
-#include "custom_utilities/mortar_explicit_contribution.h"
-#include "custom_utilities/mortar_geometry_adapters.h"
+#include <utility>
+
+#include "custom_conditions/frictionless_mortar_contact_common.h"
 
 namespace contact_app {
 namespace {
 
-const Variable<double>* const kDisplacementComponents[] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
+using namespace frictionless_detail;
 
-/// Per-node constants of the residual (held constant by the tangent).
+/// The ALM constants: k = SCALE_FACTOR and the nodal ε_j (positive on inactive nodes, which divide by it), δ_j.
 template <int TNumNodes>
-struct NodalParameters {
-    Eigen::Matrix<double, TNumNodes, 1> penalty, dynamic_factor;
-    std::array<bool, TNumNodes> active{};
-    double scale_factor = 0.0;
-};
-
-template <int TNumNodes>
-NodalParameters<TNumNodes> ReadParameters(const Geometry& slave, const ProcessInfo& process_info, IndexType id) {
-    NodalParameters<TNumNodes> p;
+std::pair<double, NodalParameters<TNumNodes>> ReadParameters(const Geometry& slave, const ProcessInfo& process_info,
+                                                             IndexType id) {
     CONTACT_CHECK(process_info.Has(SCALE_FACTOR), InputError, "ALM contact condition ", id,
                   ": SCALE_FACTOR is not set in the ProcessInfo\n  fix: run the ALM initialisation (ALMFastInit)",
                   " or set ProcessInfo[SCALE_FACTOR]");
-    p.scale_factor = process_info.GetValue(SCALE_FACTOR);
-    for (int j = 0; j < TNumNodes; ++j) {
-        const Node& node = slave[j];
-        p.active[j] = node.Is(ACTIVE);
-        p.penalty[j] = node.GetValue(INITIAL_PENALTY);
-        p.dynamic_factor[j] = node.Has(DYNAMIC_FACTOR) ? node.GetValue(DYNAMIC_FACTOR) : 1.0;
-        CONTACT_CHECK(p.active[j] || p.penalty[j] > 0.0, InputError, "ALM contact condition ", id, ": slave node ",
-                      node.Id(), " has INITIAL_PENALTY ", p.penalty[j], "\n  expected: a positive nodal penalty",
-                      "\n  fix: run the ALM initialisation (ALMFastInit) before assembling");
-    }
-    return p;
+    return {process_info.GetValue(SCALE_FACTOR),
+            ReadNodalParameters<TNumNodes>(slave, id, "ALM", [](bool active) { return !active; })};
 }
 
 /// RHS of kratos_residuals.md §3.1 for one pair, q = [u2 (d·n_m), u1 (d·n_s), λ (n_s)].
 template <class T, int TDim, int TNS, int TNM, class TState, class TVector>
-void AddFrictionlessResidual(const TState& s, const NodalParameters<TNS>& p, TVector& rhs) {
-    constexpr int slave_offset = TDim * TNM, lambda_offset = TDim * (TNS + TNM);
-    const double k = p.scale_factor;
+void AddFrictionlessResidual(const TState& s, double k, const NodalParameters<TNS>& p, TVector& rhs) {
+    constexpr int lambda_offset = TDim * (TNS + TNM);
     for (int j = 0; j < TNS; ++j) {
         const double eps = p.penalty[j];
         if (!p.active[j]) {
             rhs[lambda_offset + j] += -(k * k / eps) * s.multipliers[j];
             continue;
         }
-        Eigen::Matrix<T, 1, TDim> r = s.operators.D.row(j) * s.x1 - s.operators.M.row(j) * s.x2;
-        const T gap = -r.dot(s.normals.row(j));
-        const T force = p.dynamic_factor[j] * (k * s.multipliers[j] + eps * gap);
-        for (int c = 0; c < TDim; ++c) {
-            const T f = force * s.normals(j, c);
-            for (int a = 0; a < TNS; ++a) rhs[slave_offset + a * TDim + c] += s.operators.D(j, a) * f;
-            for (int l = 0; l < TNM; ++l) rhs[l * TDim + c] -= s.operators.M(j, l) * f;
-        }
+        const T gap = PairGap<T, TDim>(s, j);
+        SpreadNormalForce<T, TDim, TNS, TNM>(s, j, T(p.dynamic_factor[j] * (k * s.multipliers[j] + eps * gap)), rhs);
         rhs[lambda_offset + j] += k * gap;
     }
 }
@@ -86,33 +62,18 @@ void ALM_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&
     const Geometry& master = this->GetPairedGeometry();
     rElementalDofList.clear();
     rElementalDofList.reserve(BaseType::MatrixSize);
-    for (int l = 0; l < TNM; ++l)
-        for (int c = 0; c < TDim; ++c) rElementalDofList.push_back(&master[l].GetDof(*kDisplacementComponents[c]));
-    for (int j = 0; j < TNS; ++j)
-        for (int c = 0; c < TDim; ++c) rElementalDofList.push_back(&slave[j].GetDof(*kDisplacementComponents[c]));
+    AppendDisplacementDofs<TDim, TNS, TNM>(slave, master, rElementalDofList);
     for (int j = 0; j < TNS; ++j) rElementalDofList.push_back(&slave[j].GetDof(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE));
 }
 
 ALM_TEMPLATE
 int ALM_CLASS::GetActiveInactiveValue() const {
-    const Geometry& slave = this->GetParentGeometry();
-    int value = 0;
-    for (int j = 0; j < TNS; ++j)
-        if (slave[j].Is(ACTIVE)) value += 1 << j;
-    return value;
+    return ActiveNodesValue<TNS>(this->GetParentGeometry());
 }
 
 ALM_TEMPLATE
 void ALM_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) {
-    Geometry& slave = *this->pGetParentGeometry();
-    const MortarIntegrator<TDim, TNS, TNM, double> integrator(this->IntegrationSettings(),
-                                                              this->SegmentationSettingsFrom(rCurrentProcessInfo));
-    const auto result = ComputeExplicitMortarContribution<TDim, TNS, TNM, double, double>(
-        integrator, CurrentCoordinates<TDim, TNS>(slave), ToSpatialVector<TDim>(this->GetValue(NORMAL)),
-        CurrentCoordinates<TDim, TNM>(this->GetPairedGeometry()), NodalNormals<TDim, TNS>(slave),
-        ExplicitContributionOptions{});
-    if (result.isolated) return this->Set(ISOLATED, true);
-    for (int j = 0; j < TNS; ++j) slave[j].FastGetSolutionStepValue(WEIGHTED_GAP) += result.weighted_gap[j];
+    AddFrictionlessExplicitContribution<TDim, TNS, TNM>(*this, rCurrentProcessInfo, false);
 }
 
 ALM_TEMPLATE
@@ -139,15 +100,15 @@ typename ALM_CLASS::BaseType::MultiplierVector ALM_CLASS::MultiplierValues() con
 ALM_TEMPLATE
 void ALM_CLASS::AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
                             LocalVector<double>& rhs) const {
-    const auto p = ReadParameters<TNS>(this->GetParentGeometry(), rCurrentProcessInfo, this->Id());
-    AddFrictionlessResidual<double, TDim, TNS, TNM>(state, p, rhs);
+    const auto [k, p] = ReadParameters<TNS>(this->GetParentGeometry(), rCurrentProcessInfo, this->Id());
+    AddFrictionlessResidual<double, TDim, TNS, TNM>(state, k, p, rhs);
 }
 
 ALM_TEMPLATE
 void ALM_CLASS::AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
                             LocalVector<ADScalar>& rhs) const {
-    const auto p = ReadParameters<TNS>(this->GetParentGeometry(), rCurrentProcessInfo, this->Id());
-    AddFrictionlessResidual<ADScalar, TDim, TNS, TNM>(state, p, rhs);
+    const auto [k, p] = ReadParameters<TNS>(this->GetParentGeometry(), rCurrentProcessInfo, this->Id());
+    AddFrictionlessResidual<ADScalar, TDim, TNS, TNM>(state, k, p, rhs);
 }
 
 template <int TNS, bool TNV>

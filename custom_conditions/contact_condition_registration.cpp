@@ -7,6 +7,7 @@
 #include "contact_app/kernel/geometries/geometry_factory.h"
 #include "contact_app/kernel/registry.h"
 #include "custom_conditions/alm_frictionless_mortar_contact_condition.h"
+#include "custom_conditions/penalty_frictionless_mortar_contact_condition.h"
 
 namespace contact_app {
 namespace {
@@ -57,7 +58,8 @@ const FamilyRow kFamilies[] = {
                 AugmentedLagrangianMethodFrictionlessMortarContactAxisymCondition>},
     {"ALM", "FrictionlessComponents", FrictionalCase::FRICTIONLESS_COMPONENTS, false, false, nullptr},
     {"ALM", "Frictional", FrictionalCase::FRICTIONAL, true, false, nullptr},
-    {"Penalty", "Frictionless", FrictionalCase::FRICTIONLESS_PENALTY, true, false, nullptr},
+    {"Penalty", "Frictionless", FrictionalCase::FRICTIONLESS_PENALTY, true, true,
+     MakeFamily<PenaltyMethodFrictionlessMortarContactCondition, PenaltyMethodFrictionlessMortarContactAxisymCondition>},
     {"Penalty", "Frictional", FrictionalCase::FRICTIONAL_PENALTY, true, false, nullptr},
 };
 

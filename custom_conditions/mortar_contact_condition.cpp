@@ -116,7 +116,8 @@ int MORTAR_CLASS::GetActiveInactiveValue() const {
 
 MORTAR_TEMPLATE
 typename MORTAR_CLASS::MultiplierVector MORTAR_CLASS::MultiplierValues() const {
-    throw NotInBase("MultiplierValues");
+    if constexpr (NumMultipliers == 0) return MultiplierVector();  // displacement-only families (penalty)
+    else throw NotInBase("MultiplierValues");
 }
 
 MORTAR_TEMPLATE
@@ -258,6 +259,7 @@ void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Pr
     template class MortarContactCondition<3, 4, FrictionalCase::FAMILY, false, 3>;   \
     template class MortarContactCondition<3, 4, FrictionalCase::FAMILY, true, 3>;
 CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONLESS)
+CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONLESS_PENALTY)
 #undef CONTACT_APP_INSTANTIATE_MORTAR
 
 }  // namespace contact_app

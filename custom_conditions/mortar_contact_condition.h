@@ -98,7 +98,8 @@ public:
     SegmentationSettings SegmentationSettingsFrom(const ProcessInfo& rCurrentProcessInfo) const;
 
 protected:
-    /// The multiplier values of the slave nodes (the λ block of q). @throws InternalError in the base
+    /// The multiplier values of the slave nodes (the λ block of q): empty for a family without multipliers,
+    /// otherwise @throws InternalError in the base
     virtual MultiplierVector MultiplierValues() const;
     /// Adds the family RHS(q) to @p rhs (zeroed by the caller). @throws InternalError in the base
     virtual void AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,

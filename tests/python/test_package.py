@@ -45,3 +45,12 @@ def test_package_registers_the_alm_frictionless_contact_conditions() -> None:
         assert f"ALMNVFrictionlessMortarContactCondition{pair}" in names
     assert "ALMFrictionlessAxisymMortarContactCondition2D2N" in names
     assert "ALMNVFrictionlessAxisymMortarContactCondition2D2N" in names
+
+
+def test_package_registers_the_penalty_frictionless_contact_conditions() -> None:
+    names = set(ca.registered_conditions())
+    for pair in ("2D2N", "3D3N", "3D4N", "3D3N4N", "3D4N3N"):
+        assert f"PenaltyFrictionlessMortarContactCondition{pair}" in names
+        assert f"PenaltyNVFrictionlessMortarContactCondition{pair}" in names
+    assert "PenaltyFrictionlessAxisymMortarContactCondition2D2N" in names
+    assert not any(name.startswith("PenaltyFrictionalMortar") for name in names)

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// ALM frictionless mortar conditions: sizes, DoF order, FD tangent, flat-pair gap and RHS, for every registered name.
+/// Frictionless mortar conditions (ALM and penalty): sizes, DoF order, FD tangent, flat-pair gap, nodal area and
+/// RHS, for every registered name.
 #include <algorithm>
 #include <cstdio>
 #include <map>
@@ -68,13 +69,16 @@ void RandomPairCoordinates(const ContactConditionName& row, std::mt19937& rng, E
     else RandomCoordinates<MortarPairTraits<3, 4, 3>>(rng, false, s, m);
 }
 
-/// Local unknown @p q of the pair: (node, variable) in the order [master u, slave u, λ].
+bool IsPenalty(const ContactConditionName& row) { return row.family == "PenaltyFrictionless"; }
+
+/// Local unknown @p q of the pair: (node, variable) in the order [master u, slave u, λ] (no λ for penalty).
 struct LocalDof {
     Node* node;
     int component;  ///< 0..2 displacement, −1 multiplier
 };
 
-std::vector<LocalDof> LocalDofs(PairedCondition& pair, int dim) {
+std::vector<LocalDof> LocalDofs(PairedCondition& pair, const ContactConditionName& row) {
+    const int dim = row.dim;
     std::vector<LocalDof> dofs;
     auto& master = const_cast<Geometry&>(pair.GetPairedGeometry());
     auto& slave = const_cast<Geometry&>(pair.GetParentGeometry());
@@ -82,7 +86,8 @@ std::vector<LocalDof> LocalDofs(PairedCondition& pair, int dim) {
         for (int c = 0; c < dim; ++c) dofs.push_back({&master[l], c});
     for (std::size_t j = 0; j < slave.size(); ++j)
         for (int c = 0; c < dim; ++c) dofs.push_back({&slave[j], c});
-    for (std::size_t j = 0; j < slave.size(); ++j) dofs.push_back({&slave[j], -1});
+    if (!IsPenalty(row))
+        for (std::size_t j = 0; j < slave.size(); ++j) dofs.push_back({&slave[j], -1});
     return dofs;
 }
 
@@ -108,27 +113,34 @@ double RowwiseRelativeError(const Matrix& lhs, const Matrix& fd) {
 
 /// GetActiveInactiveValue through the mortar base of whichever registered instantiation @p c is.
 int ActiveInactiveValue(const Condition* c) {
-#define CONTACT_APP_TRY(D, NS, NM)                                                                              \
-    if (auto p = dynamic_cast<const MortarContactCondition<D, NS, FrictionalCase::FRICTIONLESS, false, NM>*>(c)) \
-        return p->GetActiveInactiveValue();                                                                     \
-    if (auto p = dynamic_cast<const MortarContactCondition<D, NS, FrictionalCase::FRICTIONLESS, true, NM>*>(c))  \
+#define CONTACT_APP_TRY(D, NS, NM, F)                                                                 \
+    if (auto p = dynamic_cast<const MortarContactCondition<D, NS, FrictionalCase::F, false, NM>*>(c)) \
+        return p->GetActiveInactiveValue();                                                           \
+    if (auto p = dynamic_cast<const MortarContactCondition<D, NS, FrictionalCase::F, true, NM>*>(c))  \
         return p->GetActiveInactiveValue();
-    CONTACT_APP_TRY(2, 2, 2)
-    CONTACT_APP_TRY(3, 3, 3)
-    CONTACT_APP_TRY(3, 4, 4)
-    CONTACT_APP_TRY(3, 3, 4)
-    CONTACT_APP_TRY(3, 4, 3)
+#define CONTACT_APP_TRY_PAIRS(F) \
+    CONTACT_APP_TRY(2, 2, 2, F)  \
+    CONTACT_APP_TRY(3, 3, 3, F)  \
+    CONTACT_APP_TRY(3, 4, 4, F)  \
+    CONTACT_APP_TRY(3, 3, 4, F)  \
+    CONTACT_APP_TRY(3, 4, 3, F)
+    CONTACT_APP_TRY_PAIRS(FRICTIONLESS)
+    CONTACT_APP_TRY_PAIRS(FRICTIONLESS_PENALTY)
+#undef CONTACT_APP_TRY_PAIRS
 #undef CONTACT_APP_TRY
     return -1;
 }
 
-class AlmFrictionlessNames : public ::testing::TestWithParam<std::string> {};
+class FrictionlessMortarNames : public ::testing::TestWithParam<std::string> {};
 
-const std::map<std::string, int> kSpecSizes = {{"2D2N", 10}, {"3D3N", 21}, {"3D4N", 28}, {"3D3N4N", 24}, {"3D4N3N", 25}};
+/// MatrixSize per family and pair (condition_classes.md, families table).
+const std::map<std::string, std::map<std::string, int>> kSpecSizes = {
+    {"ALMFrictionless", {{"2D2N", 10}, {"3D3N", 21}, {"3D4N", 28}, {"3D3N4N", 24}, {"3D4N3N", 25}}},
+    {"PenaltyFrictionless", {{"2D2N", 8}, {"3D3N", 18}, {"3D4N", 24}, {"3D3N4N", 21}, {"3D4N3N", 21}}}};
 
 std::string Suffix(const std::string& name) { return name.substr(name.find("Condition") + 9); }
 
-TEST_P(AlmFrictionlessNames, LocalSystemSizesAndDofOrderMatchTheSpec) {
+TEST_P(FrictionlessMortarNames, LocalSystemSizesAndDofOrderMatchTheSpec) {
     ContactPairModel model;
     const auto& row = DecodedName(GetParam());
     std::mt19937 rng(7);
@@ -144,7 +156,7 @@ TEST_P(AlmFrictionlessNames, LocalSystemSizesAndDofOrderMatchTheSpec) {
     Matrix lhs;
     Vector rhs;
     pair->CalculateLocalSystem(lhs, rhs, info);
-    EXPECT_EQ(row.matrix_size, kSpecSizes.at(Suffix(GetParam())));
+    EXPECT_EQ(row.matrix_size, kSpecSizes.at(row.family).at(Suffix(GetParam())));
     EXPECT_EQ(lhs.rows(), row.matrix_size);
     EXPECT_EQ(lhs.cols(), row.matrix_size);
     EXPECT_EQ(rhs.size(), row.matrix_size);
@@ -154,7 +166,7 @@ TEST_P(AlmFrictionlessNames, LocalSystemSizesAndDofOrderMatchTheSpec) {
     pair->EquationIdVector(ids, info);
     ASSERT_EQ(static_cast<int>(dofs.size()), row.matrix_size);
     ASSERT_EQ(static_cast<int>(ids.size()), row.matrix_size);
-    const auto expected = LocalDofs(*pair, row.dim);
+    const auto expected = LocalDofs(*pair, row);
     for (int q = 0; q < row.matrix_size; ++q) {
         EXPECT_EQ(dofs[q]->Id(), expected[q].node->Id()) << q;
         const VariableData& v = expected[q].component < 0 ? static_cast<const VariableData&>(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE)
@@ -182,7 +194,7 @@ TEST_P(AlmFrictionlessNames, LocalSystemSizesAndDofOrderMatchTheSpec) {
     EXPECT_EQ(value, expected_value);
 }
 
-TEST_P(AlmFrictionlessNames, TangentIsTheCentralDifferenceOfMinusRhs) {
+TEST_P(FrictionlessMortarNames, TangentIsTheCentralDifferenceOfMinusRhs) {
     const auto& row = DecodedName(GetParam());
     double worst = 0.0;
     for (int state = 0; state < 3; ++state) {
@@ -213,7 +225,7 @@ TEST_P(AlmFrictionlessNames, TangentIsTheCentralDifferenceOfMinusRhs) {
         Vector rhs_only;
         pair->CalculateRightHandSide(rhs_only, info);
         EXPECT_LT((rhs_only - rhs).norm(), 1e-12 * (1.0 + rhs.norm()));
-        const auto dofs = LocalDofs(*pair, row.dim);
+        const auto dofs = LocalDofs(*pair, row);
         const double h = 1e-5;
         Matrix fd(row.matrix_size, row.matrix_size);
         for (int q = 0; q < row.matrix_size; ++q) {
@@ -237,7 +249,8 @@ TEST_P(AlmFrictionlessNames, TangentIsTheCentralDifferenceOfMinusRhs) {
     std::printf("[ FD       ] %-52s worst row-wise relative error %.2e\n", GetParam().c_str(), worst);
 }
 
-/// Matching flat faces at a uniform gap g, all nodes active: WEIGHTED_GAP_j = g ∫N_j and the RHS of §3.1.
+/// Matching flat faces at a uniform gap g, all nodes active: WEIGHTED_GAP_j = g ∫N_j, NODAL_AREA_j = ∫N_j (penalty
+/// only; the ALM contribution leaves it untouched) and the RHS of §3.1 (ALM) or §3.4 (penalty).
 class MatchingPairNames : public ::testing::TestWithParam<std::string> {};
 
 std::vector<std::string> MatchingPairRegisteredNames() {
@@ -284,6 +297,7 @@ TEST_P(MatchingPairNames, MatchingFlatPairUnderUniformGap) {
         if (row.axisymmetric) nodal_measure[j] = 2.0 * M_PI * (slave[j].X() / 3.0 + slave[1 - j].X() / 6.0);
         else nodal_measure[j] = (row.num_slave == 3 ? 0.5 : 1.0) / row.num_slave;
         EXPECT_NEAR(slave[j].FastGetSolutionStepValue(WEIGHTED_GAP), g * nodal_measure[j], 1e-12) << j;
+        EXPECT_NEAR(slave[j].GetValue(NODAL_AREA), IsPenalty(row) ? nodal_measure[j] : 0.0, 1e-12) << j;
     }
     Vector rhs;
     pair->CalculateRightHandSide(rhs, info);
@@ -291,7 +305,7 @@ TEST_P(MatchingPairNames, MatchingFlatPairUnderUniformGap) {
     Vector expected = Vector::Zero(row.matrix_size);
     for (int j = 0; j < ns; ++j) {
         const double gap = g * nodal_measure[j];
-        const double force = k * lambda[j] + eps * gap;
+        const double force = (IsPenalty(row) ? 0.0 : k * lambda[j]) + eps * gap;
         const Array3 n = slave[j].FastGetSolutionStepValue(NORMAL);
         int l = 0;
         while ((master[l].Coordinates() - slave[j].Coordinates()).head(d - 0).cwiseAbs().maxCoeff() > 2 * g) ++l;
@@ -299,15 +313,55 @@ TEST_P(MatchingPairNames, MatchingFlatPairUnderUniformGap) {
             expected[d * nm + j * d + c] += force * nodal_measure[j] * n[c];
             expected[l * d + c] -= force * nodal_measure[j] * n[c];
         }
-        expected[d * (nm + ns) + j] = k * gap;
+        if (!IsPenalty(row)) expected[d * (nm + ns) + j] = k * gap;
     }
     EXPECT_LT((rhs - expected).norm(), 1e-10 * (1.0 + expected.norm())) << "rhs\n" << rhs.transpose() << "\nexpected\n"
                                                                      << expected.transpose();
 }
 
+/// Penalty only (§3.4): no SCALE_FACTOR needed; inactive nodes contribute nothing (all inactive → zero system);
+/// an active node without INITIAL_PENALTY is an input error.
+class PenaltyFrictionlessNames : public ::testing::TestWithParam<std::string> {};
+
+std::vector<std::string> PenaltyRegisteredNames() {
+    std::vector<std::string> names;
+    for (const auto& row : RegisteredContactConditionNames())
+        if (IsPenalty(row)) names.push_back(row.name);
+    return names;
+}
+
+TEST_P(PenaltyFrictionlessNames, InactiveNodesContributeNothingAndActiveOnesNeedAPenalty) {
+    const auto& row = DecodedName(GetParam());
+    ContactPairModel model;
+    std::mt19937 rng(11);
+    Eigen::MatrixXd s, m;
+    RandomPairCoordinates(row, rng, s, m);
+    auto pair = model.MakePair(GetParam(), s, m);
+    model.properties->SetValue(THICKNESS, 1.5);
+    UpdateNormals(*pair, row.dim);
+    ProcessInfo info;  // no SCALE_FACTOR: the penalty family does not read it
+    auto& slave = const_cast<Geometry&>(pair->GetParentGeometry());
+    for (std::size_t j = 0; j < slave.size(); ++j) slave[j].Set(ACTIVE, false);  // no INITIAL_PENALTY either
+    pair->Initialize(info);
+    Matrix lhs;
+    Vector rhs;
+    pair->CalculateLocalSystem(lhs, rhs, info);
+    ASSERT_FALSE(pair->Is(ISOLATED));
+    EXPECT_EQ(lhs.rows(), row.matrix_size);
+    EXPECT_EQ(lhs.norm(), 0.0);
+    EXPECT_EQ(rhs.norm(), 0.0);
+    slave[0].Set(ACTIVE, true);
+    EXPECT_THROW(pair->CalculateLocalSystem(lhs, rhs, info), InputError);
+    slave[0].SetValue(INITIAL_PENALTY, 10.0);
+    pair->CalculateLocalSystem(lhs, rhs, info);
+    EXPECT_GT(lhs.norm(), 0.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Registered, PenaltyFrictionlessNames, ::testing::ValuesIn(PenaltyRegisteredNames()),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 INSTANTIATE_TEST_SUITE_P(Registered, MatchingPairNames, ::testing::ValuesIn(MatchingPairRegisteredNames()),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
-INSTANTIATE_TEST_SUITE_P(Registered, AlmFrictionlessNames, ::testing::ValuesIn(RegisteredContactNames()),
+INSTANTIATE_TEST_SUITE_P(Registered, FrictionlessMortarNames, ::testing::ValuesIn(RegisteredContactNames()),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 }  // namespace

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// Pieces shared by the frictionless families (ALM and penalty): the displacement DoF blocks, the Σ 2^i state
+/// encoding, the nodal constants ε_j / δ_j, the pair gap g̃_j, the spread of a nodal normal force and the
+/// explicit WEIGHTED_GAP (+ NODAL_AREA) contribution. Internal to custom_conditions/.
+
+#include <array>
+
+#include <Eigen/Core>
+
+#include "contact_app/application.h"
+#include "contact_app/kernel/exceptions.h"
+#include "custom_conditions/mortar_contact_condition.h"
+#include "custom_utilities/mortar_explicit_contribution.h"
+#include "custom_utilities/mortar_geometry_adapters.h"
+
+namespace contact_app::frictionless_detail {
+
+inline const Variable<double>* const kDisplacementComponents[] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
+
+/// Appends [master DISPLACEMENT_*, slave DISPLACEMENT_*] (the first d(n_s + n_m) entries of q).
+template <int TDim, int TNS, int TNM>
+void AppendDisplacementDofs(const Geometry& slave, const Geometry& master, DofsVectorType& dofs) {
+    for (int l = 0; l < TNM; ++l)
+        for (int c = 0; c < TDim; ++c) dofs.push_back(&master[l].GetDof(*kDisplacementComponents[c]));
+    for (int j = 0; j < TNS; ++j)
+        for (int c = 0; c < TDim; ++c) dofs.push_back(&slave[j].GetDof(*kDisplacementComponents[c]));
+}
+
+/// Σ_i 2^i over the ACTIVE slave nodes.
+template <int TNS>
+int ActiveNodesValue(const Geometry& slave) {
+    int value = 0;
+    for (int j = 0; j < TNS; ++j)
+        if (slave[j].Is(ACTIVE)) value += 1 << j;
+    return value;
+}
+
+/// Per-node constants of a frictionless residual (held constant by the tangent).
+template <int TNumNodes>
+struct NodalParameters {
+    Eigen::Matrix<double, TNumNodes, 1> penalty, dynamic_factor;
+    std::array<bool, TNumNodes> active{};
+};
+
+/// ε_j = INITIAL_PENALTY, δ_j = DYNAMIC_FACTOR (1 when absent), ACTIVE. @p penalty_required_on(active) tells
+/// which nodes must carry a positive ε (ALM: the inactive ones divide by it; penalty: the active ones use it).
+/// @throws InputError naming @p method and the node
+template <int TNumNodes, class TRequired>
+NodalParameters<TNumNodes> ReadNodalParameters(const Geometry& slave, IndexType id, const char* method,
+                                               TRequired&& penalty_required_on) {
+    NodalParameters<TNumNodes> p;
+    for (int j = 0; j < TNumNodes; ++j) {
+        const Node& node = slave[j];
+        p.active[j] = node.Is(ACTIVE);
+        p.penalty[j] = node.GetValue(INITIAL_PENALTY);
+        p.dynamic_factor[j] = node.Has(DYNAMIC_FACTOR) ? node.GetValue(DYNAMIC_FACTOR) : 1.0;
+        CONTACT_CHECK(!penalty_required_on(p.active[j]) || p.penalty[j] > 0.0, InputError, method,
+                      " contact condition ", id, ": ", p.active[j] ? "active" : "inactive", " slave node ", node.Id(),
+                      " has INITIAL_PENALTY ", p.penalty[j], "\n  expected: a positive nodal penalty",
+                      "\n  fix: run the contact initialisation (ALMFastInit) before assembling");
+    }
+    return p;
+}
+
+/// g̃_j = −n_j·(D x1 − M x2)_j of the pair (positive = open).
+template <class T, int TDim, class TState>
+T PairGap(const TState& s, int j) {
+    const Eigen::Matrix<T, 1, TDim> r = s.operators.D.row(j) * s.x1 - s.operators.M.row(j) * s.x2;
+    return -r.dot(s.normals.row(j));
+}
+
+/// S_j[force n_j]: RHS_u1,a += D_ja force n_j, RHS_u2,l −= M_jl force n_j (q = [u2, u1, ...]).
+template <class T, int TDim, int TNS, int TNM, class TState, class TVector>
+void SpreadNormalForce(const TState& s, int j, const T& force, TVector& rhs) {
+    constexpr int slave_offset = TDim * TNM;
+    for (int c = 0; c < TDim; ++c) {
+        const T f = force * s.normals(j, c);
+        for (int a = 0; a < TNS; ++a) rhs[slave_offset + a * TDim + c] += s.operators.D(j, a) * f;
+        for (int l = 0; l < TNM; ++l) rhs[l * TDim + c] -= s.operators.M(j, l) * f;
+    }
+}
+
+/// Adds the pair's g̃ to the historical WEIGHTED_GAP of the slave nodes and, if @p compute_nodal_area, D_jj to
+/// their non-historical NODAL_AREA (dual basis only); flags ISOLATED instead when the pair does not overlap.
+template <int TDim, int TNS, int TNM, class TCondition>
+void AddFrictionlessExplicitContribution(TCondition& condition, const ProcessInfo& process_info,
+                                         bool compute_nodal_area) {
+    Geometry& slave = *condition.pGetParentGeometry();
+    const MortarIntegrator<TDim, TNS, TNM, double> integrator(condition.IntegrationSettings(),
+                                                              condition.SegmentationSettingsFrom(process_info));
+    ExplicitContributionOptions options;
+    options.compute_nodal_area = compute_nodal_area;
+    const auto result = ComputeExplicitMortarContribution<TDim, TNS, TNM, double, double>(
+        integrator, CurrentCoordinates<TDim, TNS>(slave), ToSpatialVector<TDim>(condition.GetValue(NORMAL)),
+        CurrentCoordinates<TDim, TNM>(condition.GetPairedGeometry()), NodalNormals<TDim, TNS>(slave), options);
+    if (result.isolated) return condition.Set(ISOLATED, true);
+    for (int j = 0; j < TNS; ++j) {
+        slave[j].FastGetSolutionStepValue(WEIGHTED_GAP) += result.weighted_gap[j];
+        if (compute_nodal_area && result.dual)
+            slave[j].SetValue(NODAL_AREA, slave[j].GetValue(NODAL_AREA) + result.nodal_area[j]);
+    }
+}
+
+}  // namespace contact_app::frictionless_detail

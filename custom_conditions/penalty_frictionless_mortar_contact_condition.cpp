@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_conditions/penalty_frictionless_mortar_contact_condition.h"
+
+#include "custom_conditions/frictionless_mortar_contact_common.h"
+
+namespace contact_app {
+namespace {
+
+using namespace frictionless_detail;
+
+/// RHS of kratos_residuals.md §3.4 for one pair, q = [u2 (d·n_m), u1 (d·n_s)]: S_j[δ_j ε_j g̃_j n_j] on the
+/// active nodes, nothing on the inactive ones.
+template <class T, int TDim, int TNS, int TNM, class TState, class TVector>
+void AddPenaltyFrictionlessResidual(const TState& s, const NodalParameters<TNS>& p, TVector& rhs) {
+    for (int j = 0; j < TNS; ++j) {
+        if (!p.active[j]) continue;
+        const T gap = PairGap<T, TDim>(s, j);
+        SpreadNormalForce<T, TDim, TNS, TNM>(s, j, T(p.dynamic_factor[j] * p.penalty[j] * gap), rhs);
+    }
+}
+
+/// ε_j must be positive on the active nodes (an active node without INITIAL_PENALTY would transmit nothing).
+template <int TNumNodes>
+NodalParameters<TNumNodes> ReadParameters(const Geometry& slave, IndexType id) {
+    return ReadNodalParameters<TNumNodes>(slave, id, "Penalty", [](bool active) { return active; });
+}
+
+}  // namespace
+
+#define PENALTY_TEMPLATE template <int TDim, int TNS, bool TNV, int TNM>
+#define PENALTY_CLASS PenaltyMethodFrictionlessMortarContactCondition<TDim, TNS, TNV, TNM>
+
+PENALTY_TEMPLATE
+Condition::Pointer PENALTY_CLASS::Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
+                                         Geometry::Pointer master) const {
+    return std::make_shared<PENALTY_CLASS>(new_id, std::move(slave), std::move(properties), std::move(master));
+}
+
+PENALTY_TEMPLATE
+void PENALTY_CLASS::EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const {
+    DofsVectorType dofs;
+    GetDofList(dofs, rCurrentProcessInfo);
+    rResult.resize(dofs.size());
+    for (std::size_t i = 0; i < dofs.size(); ++i) rResult[i] = dofs[i]->EquationId();
+}
+
+PENALTY_TEMPLATE
+void PENALTY_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&) const {
+    rElementalDofList.clear();
+    rElementalDofList.reserve(BaseType::MatrixSize);
+    AppendDisplacementDofs<TDim, TNS, TNM>(this->GetParentGeometry(), this->GetPairedGeometry(), rElementalDofList);
+}
+
+PENALTY_TEMPLATE
+int PENALTY_CLASS::GetActiveInactiveValue() const {
+    return ActiveNodesValue<TNS>(this->GetParentGeometry());
+}
+
+PENALTY_TEMPLATE
+void PENALTY_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) {
+    AddFrictionlessExplicitContribution<TDim, TNS, TNM>(*this, rCurrentProcessInfo, true);
+}
+
+PENALTY_TEMPLATE
+void PENALTY_CLASS::AddResidual(const State<double>& state, const ProcessInfo&, LocalVector<double>& rhs) const {
+    AddPenaltyFrictionlessResidual<double, TDim, TNS, TNM>(state, ReadParameters<TNS>(this->GetParentGeometry(), this->Id()),
+                                                           rhs);
+}
+
+PENALTY_TEMPLATE
+void PENALTY_CLASS::AddResidual(const State<ADScalar>& state, const ProcessInfo&, LocalVector<ADScalar>& rhs) const {
+    AddPenaltyFrictionlessResidual<ADScalar, TDim, TNS, TNM>(
+        state, ReadParameters<TNS>(this->GetParentGeometry(), this->Id()), rhs);
+}
+
+template <int TNS, bool TNV>
+Condition::Pointer PenaltyMethodFrictionlessMortarContactAxisymCondition<TNS, TNV>::Create(
+    IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties, Geometry::Pointer master) const {
+    return std::make_shared<PenaltyMethodFrictionlessMortarContactAxisymCondition<TNS, TNV>>(
+        new_id, std::move(slave), std::move(properties), std::move(master));
+}
+
+#undef PENALTY_TEMPLATE
+#undef PENALTY_CLASS
+
+template class PenaltyMethodFrictionlessMortarContactCondition<2, 2, false, 2>;
+template class PenaltyMethodFrictionlessMortarContactCondition<2, 2, true, 2>;
+template class PenaltyMethodFrictionlessMortarContactCondition<3, 3, false, 3>;
+template class PenaltyMethodFrictionlessMortarContactCondition<3, 3, true, 3>;
+template class PenaltyMethodFrictionlessMortarContactCondition<3, 4, false, 4>;
+template class PenaltyMethodFrictionlessMortarContactCondition<3, 4, true, 4>;
+template class PenaltyMethodFrictionlessMortarContactCondition<3, 3, false, 4>;
+template class PenaltyMethodFrictionlessMortarContactCondition<3, 3, true, 4>;
+template class PenaltyMethodFrictionlessMortarContactCondition<3, 4, false, 3>;
+template class PenaltyMethodFrictionlessMortarContactCondition<3, 4, true, 3>;
+template class PenaltyMethodFrictionlessMortarContactAxisymCondition<2, false>;
+template class PenaltyMethodFrictionlessMortarContactAxisymCondition<2, true>;
+
+}  // namespace contact_app

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include "custom_conditions/mortar_contact_condition.h"
+
+namespace contact_app {
+
+/// Penalty frictionless mortar contact, displacement DoFs only (kratos_residuals.md §3.4). With
+/// g̃_j = −n_j·(D x1 − M x2)_j, the augmented pressure of an active node is λ̄_j = ε_j g̃_j and
+/// RHS_u1,k += δ_j λ̄_j D_jk n_j, RHS_u2,l −= δ_j λ̄_j M_jl n_j; an inactive node contributes nothing (its rows
+/// and columns stay zero). ε_j = INITIAL_PENALTY and δ_j = DYNAMIC_FACTOR (nodal, non-historical; δ = 1 when
+/// the node has none). LHS = −∂RHS/∂q by AD. Registers Penalty[NV]FrictionlessMortarContactCondition
+/// {2D2N,3D3N,3D4N,3D3N4N,3D4N3N}; local system [master u, slave u] of size d(n_s + n_m).
+template <int TDim, int TNumNodes, bool TNormalVariation, int TNumNodesMaster = TNumNodes>
+class PenaltyMethodFrictionlessMortarContactCondition
+    : public MortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONLESS_PENALTY, TNormalVariation,
+                                    TNumNodesMaster> {
+public:
+    using BaseType = MortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONLESS_PENALTY, TNormalVariation,
+                                            TNumNodesMaster>;
+    using typename BaseType::ADScalar;
+    template <class T>
+    using State = typename BaseType::template State<T>;
+    template <class T>
+    using LocalVector = typename BaseType::template LocalVector<T>;
+    using BaseType::BaseType;
+    using BaseType::Create;
+
+    Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
+                              Geometry::Pointer master) const override;
+    /// @param[out] rResult [master DISPLACEMENT_*, slave DISPLACEMENT_*]
+    /// @throws InputError if a DoF is missing
+    void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
+    void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
+    /// Σ_i 2^i over the slave nodes that are ACTIVE.
+    int GetActiveInactiveValue() const override;
+    /// Adds the pair's weighted gap g̃ to the historical WEIGHTED_GAP and D_jj (= ∫Φ_j N_j, dual basis only) to
+    /// the non-historical NODAL_AREA of the slave nodes (or flags ISOLATED). Unlike the reference, whose penalty
+    /// explicit contribution hard-codes the plane case, the axisymmetric variant weights both by 2π r / t, as its
+    /// implicit operators (kratos_residuals.md §3.7).
+    void AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) override;
+
+protected:
+    void AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
+                     LocalVector<double>& rhs) const override;
+    void AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
+                     LocalVector<ADScalar>& rhs) const override;
+};
+
+/// Axisymmetric variant (2D2N only): every Gauss weight times 2π r / THICKNESS, r = x-coordinate of the
+/// point (differentiated exactly by the AD tangent). Registers Penalty[NV]FrictionlessAxisymMortarContactCondition2D2N.
+template <int TNumNodes, bool TNormalVariation>
+class PenaltyMethodFrictionlessMortarContactAxisymCondition
+    : public PenaltyMethodFrictionlessMortarContactCondition<2, TNumNodes, TNormalVariation> {
+public:
+    using BaseType = PenaltyMethodFrictionlessMortarContactCondition<2, TNumNodes, TNormalVariation>;
+    using BaseType::BaseType;
+    using BaseType::Create;
+
+    Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
+                              Geometry::Pointer master) const override;
+    bool IsAxisymmetric() const override { return true; }
+};
+
+}  // namespace contact_app
