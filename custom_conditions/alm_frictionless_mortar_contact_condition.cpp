@@ -1,25 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_conditions/alm_frictionless_mortar_contact_condition.h"
 
-#include <utility>
-
 #include "custom_conditions/frictionless_mortar_contact_common.h"
 
 namespace contact_app {
 namespace {
 
 using namespace frictionless_detail;
-
-/// The ALM constants: k = SCALE_FACTOR and the nodal ε_j (positive on inactive nodes, which divide by it), δ_j.
-template <int TNumNodes>
-std::pair<double, NodalParameters<TNumNodes>> ReadParameters(const Geometry& slave, const ProcessInfo& process_info,
-                                                             IndexType id) {
-    CONTACT_CHECK(process_info.Has(SCALE_FACTOR), InputError, "ALM contact condition ", id,
-                  ": SCALE_FACTOR is not set in the ProcessInfo\n  fix: run the ALM initialisation (ALMFastInit)",
-                  " or set ProcessInfo[SCALE_FACTOR]");
-    return {process_info.GetValue(SCALE_FACTOR),
-            ReadNodalParameters<TNumNodes>(slave, id, "ALM", [](bool active) { return !active; })};
-}
 
 /// RHS of kratos_residuals.md §3.1 for one pair, q = [u2 (d·n_m), u1 (d·n_s), λ (n_s)].
 template <class T, int TDim, int TNS, int TNM, class TState, class TVector>
@@ -52,8 +39,7 @@ ALM_TEMPLATE
 void ALM_CLASS::EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const {
     DofsVectorType dofs;
     GetDofList(dofs, rCurrentProcessInfo);
-    rResult.resize(dofs.size());
-    for (std::size_t i = 0; i < dofs.size(); ++i) rResult[i] = dofs[i]->EquationId();
+    EquationIdsOf(dofs, rResult);
 }
 
 ALM_TEMPLATE
@@ -100,14 +86,14 @@ typename ALM_CLASS::BaseType::MultiplierVector ALM_CLASS::MultiplierValues() con
 ALM_TEMPLATE
 void ALM_CLASS::AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
                             LocalVector<double>& rhs) const {
-    const auto [k, p] = ReadParameters<TNS>(this->GetParentGeometry(), rCurrentProcessInfo, this->Id());
+    const auto [k, p] = ReadALMParameters<TNS>(this->GetParentGeometry(), rCurrentProcessInfo, this->Id());
     AddFrictionlessResidual<double, TDim, TNS, TNM>(state, k, p, rhs);
 }
 
 ALM_TEMPLATE
 void ALM_CLASS::AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
                             LocalVector<ADScalar>& rhs) const {
-    const auto [k, p] = ReadParameters<TNS>(this->GetParentGeometry(), rCurrentProcessInfo, this->Id());
+    const auto [k, p] = ReadALMParameters<TNS>(this->GetParentGeometry(), rCurrentProcessInfo, this->Id());
     AddFrictionlessResidual<ADScalar, TDim, TNS, TNM>(state, k, p, rhs);
 }
 

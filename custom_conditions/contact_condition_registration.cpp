@@ -3,9 +3,11 @@
 #include "custom_conditions/contact_condition_registration.h"
 
 #include <memory>
+#include <utility>
 
 #include "contact_app/kernel/geometries/geometry_factory.h"
 #include "contact_app/kernel/registry.h"
+#include "custom_conditions/alm_frictionless_components_mortar_contact_condition.h"
 #include "custom_conditions/alm_frictionless_mortar_contact_condition.h"
 #include "custom_conditions/penalty_frictionless_mortar_contact_condition.h"
 
@@ -32,17 +34,16 @@ struct FamilyRow {
     Factory factory;
 };
 
-template <template <int, int, bool, int> class TFamily, template <int, bool> class TAxisym>
-std::shared_ptr<const Condition> MakeFamily(const PairRow& pair, bool nv, bool axisym, Geometry::Pointer s,
-                                            Geometry::Pointer m) {
+/// The plane prototypes of a family (5 pairs × NV). @throws InternalError for an axisymmetric or unknown row
+template <template <int, int, bool, int> class TFamily>
+std::shared_ptr<const Condition> MakePlaneFamily(const PairRow& pair, bool nv, bool axisym, Geometry::Pointer s,
+                                                 Geometry::Pointer m) {
+    CONTACT_CHECK(!axisym, InternalError, "contact condition table: the family has no axisymmetric variant");
     auto make = [&](auto prototype) -> std::shared_ptr<const Condition> { return prototype; };
 #define CONTACT_APP_PAIR(D, NS, NM)                                                                          \
     if (pair.dim == D && pair.num_slave == NS && pair.num_master == NM)                                      \
         return nv ? make(std::make_shared<const TFamily<D, NS, true, NM>>(0, s, nullptr, m))                 \
                   : make(std::make_shared<const TFamily<D, NS, false, NM>>(0, s, nullptr, m));
-    if (axisym)
-        return nv ? make(std::make_shared<const TAxisym<2, true>>(0, s, nullptr, m))
-                  : make(std::make_shared<const TAxisym<2, false>>(0, s, nullptr, m));
     CONTACT_APP_PAIR(2, 2, 2)
     CONTACT_APP_PAIR(3, 3, 3)
     CONTACT_APP_PAIR(3, 4, 4)
@@ -52,11 +53,22 @@ std::shared_ptr<const Condition> MakeFamily(const PairRow& pair, bool nv, bool a
     CONTACT_THROW(InternalError, "contact condition table: unknown pair ", pair.suffix);
 }
 
+/// The plane prototypes plus the 2D axisymmetric variant TAxisym.
+template <template <int, int, bool, int> class TFamily, template <int, bool> class TAxisym>
+std::shared_ptr<const Condition> MakeFamily(const PairRow& pair, bool nv, bool axisym, Geometry::Pointer s,
+                                            Geometry::Pointer m) {
+    if (axisym)
+        return nv ? std::shared_ptr<const Condition>(std::make_shared<const TAxisym<2, true>>(0, s, nullptr, m))
+                  : std::shared_ptr<const Condition>(std::make_shared<const TAxisym<2, false>>(0, s, nullptr, m));
+    return MakePlaneFamily<TFamily>(pair, nv, false, std::move(s), std::move(m));
+}
+
 const FamilyRow kFamilies[] = {
     {"ALM", "Frictionless", FrictionalCase::FRICTIONLESS, true, true,
      MakeFamily<AugmentedLagrangianMethodFrictionlessMortarContactCondition,
                 AugmentedLagrangianMethodFrictionlessMortarContactAxisymCondition>},
-    {"ALM", "FrictionlessComponents", FrictionalCase::FRICTIONLESS_COMPONENTS, false, false, nullptr},
+    {"ALM", "FrictionlessComponents", FrictionalCase::FRICTIONLESS_COMPONENTS, false, true,
+     MakePlaneFamily<AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition>},
     {"ALM", "Frictional", FrictionalCase::FRICTIONAL, true, false, nullptr},
     {"Penalty", "Frictionless", FrictionalCase::FRICTIONLESS_PENALTY, true, true,
      MakeFamily<PenaltyMethodFrictionlessMortarContactCondition, PenaltyMethodFrictionlessMortarContactAxisymCondition>},

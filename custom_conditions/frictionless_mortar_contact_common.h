@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-/// Pieces shared by the frictionless families (ALM and penalty): the displacement DoF blocks, the Σ 2^i state
-/// encoding, the nodal constants ε_j / δ_j, the pair gap g̃_j, the spread of a nodal normal force and the
+/// Pieces shared by the frictionless families (ALM, ALM components and penalty): the displacement DoF blocks, the Σ 2^i state
+/// encoding, the nodal constants k / ε_j / δ_j, the pair gap g̃_j, the spread of a nodal normal force and the
 /// explicit WEIGHTED_GAP (+ NODAL_AREA) contribution. Internal to custom_conditions/.
 
 #include <array>
+#include <utility>
 
 #include <Eigen/Core>
 
@@ -70,15 +71,39 @@ T PairGap(const TState& s, int j) {
     return -r.dot(s.normals.row(j));
 }
 
-/// S_j[force n_j]: RHS_u1,a += D_ja force n_j, RHS_u2,l −= M_jl force n_j (q = [u2, u1, ...]).
+/// S_j[f]: RHS_u1,a += D_ja f, RHS_u2,l −= M_jl f for a nodal force vector f (q = [u2, u1, ...]).
 template <class T, int TDim, int TNS, int TNM, class TState, class TVector>
-void SpreadNormalForce(const TState& s, int j, const T& force, TVector& rhs) {
+void SpreadForce(const TState& s, int j, const Eigen::Matrix<T, TDim, 1>& force, TVector& rhs) {
     constexpr int slave_offset = TDim * TNM;
     for (int c = 0; c < TDim; ++c) {
-        const T f = force * s.normals(j, c);
-        for (int a = 0; a < TNS; ++a) rhs[slave_offset + a * TDim + c] += s.operators.D(j, a) * f;
-        for (int l = 0; l < TNM; ++l) rhs[l * TDim + c] -= s.operators.M(j, l) * f;
+        for (int a = 0; a < TNS; ++a) rhs[slave_offset + a * TDim + c] += s.operators.D(j, a) * force[c];
+        for (int l = 0; l < TNM; ++l) rhs[l * TDim + c] -= s.operators.M(j, l) * force[c];
     }
+}
+
+/// S_j[force n_j].
+template <class T, int TDim, int TNS, int TNM, class TState, class TVector>
+void SpreadNormalForce(const TState& s, int j, const T& force, TVector& rhs) {
+    const Eigen::Matrix<T, TDim, 1> f = force * s.normals.row(j).transpose();
+    SpreadForce<T, TDim, TNS, TNM>(s, j, f, rhs);
+}
+
+/// The ALM constants: k = SCALE_FACTOR (ProcessInfo) and the nodal ε_j (positive on the inactive nodes, which
+/// divide by it), δ_j. @throws InputError without SCALE_FACTOR or with a non-positive ε on an inactive node
+template <int TNumNodes>
+std::pair<double, NodalParameters<TNumNodes>> ReadALMParameters(const Geometry& slave, const ProcessInfo& process_info,
+                                                                IndexType id) {
+    CONTACT_CHECK(process_info.Has(SCALE_FACTOR), InputError, "ALM contact condition ", id,
+                  ": SCALE_FACTOR is not set in the ProcessInfo\n  fix: run the ALM initialisation (ALMFastInit)",
+                  " or set ProcessInfo[SCALE_FACTOR]");
+    return {process_info.GetValue(SCALE_FACTOR),
+            ReadNodalParameters<TNumNodes>(slave, id, "ALM", [](bool active) { return !active; })};
+}
+
+/// The equation ids of @p dofs, in order.
+inline void EquationIdsOf(const DofsVectorType& dofs, EquationIdVectorType& ids) {
+    ids.resize(dofs.size());
+    for (std::size_t i = 0; i < dofs.size(); ++i) ids[i] = dofs[i]->EquationId();
 }
 
 /// Adds the pair's g̃ to the historical WEIGHTED_GAP of the slave nodes and, if @p compute_nodal_area, D_jj to

@@ -259,6 +259,7 @@ void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Pr
     template class MortarContactCondition<3, 4, FrictionalCase::FAMILY, false, 3>;   \
     template class MortarContactCondition<3, 4, FrictionalCase::FAMILY, true, 3>;
 CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONLESS)
+CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONLESS_COMPONENTS)
 CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONLESS_PENALTY)
 #undef CONTACT_APP_INSTANTIATE_MORTAR
 

@@ -40,8 +40,7 @@ PENALTY_TEMPLATE
 void PENALTY_CLASS::EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const {
     DofsVectorType dofs;
     GetDofList(dofs, rCurrentProcessInfo);
-    rResult.resize(dofs.size());
-    for (std::size_t i = 0; i < dofs.size(); ++i) rResult[i] = dofs[i]->EquationId();
+    EquationIdsOf(dofs, rResult);
 }
 
 PENALTY_TEMPLATE

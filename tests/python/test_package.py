@@ -47,6 +47,15 @@ def test_package_registers_the_alm_frictionless_contact_conditions() -> None:
     assert "ALMNVFrictionlessAxisymMortarContactCondition2D2N" in names
 
 
+def test_package_registers_the_alm_frictionless_components_contact_conditions() -> None:
+    names = set(ca.registered_conditions())
+    for pair in ("2D2N", "3D3N", "3D4N", "3D3N4N", "3D4N3N"):
+        assert f"ALMFrictionlessComponentsMortarContactCondition{pair}" in names
+        assert f"ALMNVFrictionlessComponentsMortarContactCondition{pair}" in names
+    assert not any("FrictionlessComponentsAxisym" in name for name in names)
+    assert sum("FrictionlessComponents" in name for name in names) == 10
+
+
 def test_package_registers_the_penalty_frictionless_contact_conditions() -> None:
     names = set(ca.registered_conditions())
     for pair in ("2D2N", "3D3N", "3D4N", "3D3N4N", "3D4N3N"):

@@ -33,7 +33,7 @@ inline std::string FaceGeometryName(int dim, int num_nodes) {
     return dim == 2 ? "Line2D2" : (num_nodes == 3 ? "Triangle3D3" : "Quadrilateral3D4");
 }
 
-/// A model part with the historical variables and DoFs of the ALM frictionless solver.
+/// A model part with the historical variables and DoFs of the ALM frictionless (scalar and vector multiplier) solvers.
 class ContactPairModel {
 public:
     ContactPairModel() {
@@ -43,7 +43,8 @@ public:
         for (const VariableData* v : {static_cast<const VariableData*>(&DISPLACEMENT),
                                       static_cast<const VariableData*>(&NORMAL),
                                       static_cast<const VariableData*>(&WEIGHTED_GAP),
-                                      static_cast<const VariableData*>(&LAGRANGE_MULTIPLIER_CONTACT_PRESSURE)})
+                                      static_cast<const VariableData*>(&LAGRANGE_MULTIPLIER_CONTACT_PRESSURE),
+                                      static_cast<const VariableData*>(&VECTOR_LAGRANGE_MULTIPLIER)})
             part->AddNodalSolutionStepVariable(*v);
         properties = part->CreateNewProperties(1);
     }
@@ -54,6 +55,9 @@ public:
         node->AddDof(DISPLACEMENT_Y);
         node->AddDof(DISPLACEMENT_Z);
         node->AddDof(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE);
+        node->AddDof(VECTOR_LAGRANGE_MULTIPLIER_X);
+        node->AddDof(VECTOR_LAGRANGE_MULTIPLIER_Y);
+        node->AddDof(VECTOR_LAGRANGE_MULTIPLIER_Z);
         return *node;
     }
 

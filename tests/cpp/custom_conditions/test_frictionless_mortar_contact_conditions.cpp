@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// Frictionless mortar conditions (ALM and penalty): sizes, DoF order, FD tangent, flat-pair gap, nodal area and
+/// Frictionless mortar conditions (ALM, ALM components and penalty): sizes, DoF order, FD tangent, flat-pair gap, nodal area and
 /// RHS, for every registered name.
 #include <algorithm>
 #include <cstdio>
@@ -70,12 +70,31 @@ void RandomPairCoordinates(const ContactConditionName& row, std::mt19937& rng, E
 }
 
 bool IsPenalty(const ContactConditionName& row) { return row.family == "PenaltyFrictionless"; }
+bool IsComponents(const ContactConditionName& row) { return row.family == "ALMFrictionlessComponents"; }
 
-/// Local unknown @p q of the pair: (node, variable) in the order [master u, slave u, λ] (no λ for penalty).
+/// Local unknown @p q of the pair: (node, variable) in the order [master u, slave u, λ] (no λ for penalty; d
+/// components of VECTOR_LAGRANGE_MULTIPLIER per slave node for the components family).
 struct LocalDof {
     Node* node;
-    int component;  ///< 0..2 displacement, −1 multiplier
+    int component;  ///< 0..2 displacement, −1 scalar multiplier, kVectorMultiplier + c vector multiplier
 };
+constexpr int kVectorMultiplier = 10;
+
+const Variable<double>& DofVariable(const LocalDof& dof) {
+    static const std::array<const Variable<double>*, 3> u = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
+    static const std::array<const Variable<double>*, 3> l = {&VECTOR_LAGRANGE_MULTIPLIER_X,
+                                                             &VECTOR_LAGRANGE_MULTIPLIER_Y,
+                                                             &VECTOR_LAGRANGE_MULTIPLIER_Z};
+    if (dof.component < 0) return LAGRANGE_MULTIPLIER_CONTACT_PRESSURE;
+    return dof.component >= kVectorMultiplier ? *l[dof.component - kVectorMultiplier] : *u[dof.component];
+}
+
+/// Sets the multiplier of slave node @p node: λ_n for the scalar family, λ = λ_n n + τ for the components one.
+void SetMultiplier(Node& node, double lambda_n, const Array3& tangential = Array3::Zero()) {
+    node.FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE) = lambda_n;
+    node.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) =
+        lambda_n * node.FastGetSolutionStepValue(NORMAL) + tangential;
+}
 
 std::vector<LocalDof> LocalDofs(PairedCondition& pair, const ContactConditionName& row) {
     const int dim = row.dim;
@@ -86,7 +105,10 @@ std::vector<LocalDof> LocalDofs(PairedCondition& pair, const ContactConditionNam
         for (int c = 0; c < dim; ++c) dofs.push_back({&master[l], c});
     for (std::size_t j = 0; j < slave.size(); ++j)
         for (int c = 0; c < dim; ++c) dofs.push_back({&slave[j], c});
-    if (!IsPenalty(row))
+    if (IsComponents(row))
+        for (std::size_t j = 0; j < slave.size(); ++j)
+            for (int c = 0; c < dim; ++c) dofs.push_back({&slave[j], kVectorMultiplier + c});
+    else if (!IsPenalty(row))
         for (std::size_t j = 0; j < slave.size(); ++j) dofs.push_back({&slave[j], -1});
     return dofs;
 }
@@ -94,6 +116,8 @@ std::vector<LocalDof> LocalDofs(PairedCondition& pair, const ContactConditionNam
 void Perturb(const LocalDof& dof, double h) {
     if (dof.component < 0) {
         dof.node->FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE) += h;
+    } else if (dof.component >= kVectorMultiplier) {
+        dof.node->FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER)[dof.component - kVectorMultiplier] += h;
     } else {
         dof.node->Coordinates()[dof.component] += h;
         dof.node->FastGetSolutionStepValue(DISPLACEMENT)[dof.component] += h;
@@ -125,6 +149,7 @@ int ActiveInactiveValue(const Condition* c) {
     CONTACT_APP_TRY(3, 3, 4, F)  \
     CONTACT_APP_TRY(3, 4, 3, F)
     CONTACT_APP_TRY_PAIRS(FRICTIONLESS)
+    CONTACT_APP_TRY_PAIRS(FRICTIONLESS_COMPONENTS)
     CONTACT_APP_TRY_PAIRS(FRICTIONLESS_PENALTY)
 #undef CONTACT_APP_TRY_PAIRS
 #undef CONTACT_APP_TRY
@@ -136,6 +161,7 @@ class FrictionlessMortarNames : public ::testing::TestWithParam<std::string> {};
 /// MatrixSize per family and pair (condition_classes.md, families table).
 const std::map<std::string, std::map<std::string, int>> kSpecSizes = {
     {"ALMFrictionless", {{"2D2N", 10}, {"3D3N", 21}, {"3D4N", 28}, {"3D3N4N", 24}, {"3D4N3N", 25}}},
+    {"ALMFrictionlessComponents", {{"2D2N", 12}, {"3D3N", 27}, {"3D4N", 36}, {"3D3N4N", 30}, {"3D4N3N", 33}}},
     {"PenaltyFrictionless", {{"2D2N", 8}, {"3D3N", 18}, {"3D4N", 24}, {"3D3N4N", 21}, {"3D4N3N", 21}}}};
 
 std::string Suffix(const std::string& name) { return name.substr(name.find("Condition") + 9); }
@@ -169,10 +195,7 @@ TEST_P(FrictionlessMortarNames, LocalSystemSizesAndDofOrderMatchTheSpec) {
     const auto expected = LocalDofs(*pair, row);
     for (int q = 0; q < row.matrix_size; ++q) {
         EXPECT_EQ(dofs[q]->Id(), expected[q].node->Id()) << q;
-        const VariableData& v = expected[q].component < 0 ? static_cast<const VariableData&>(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE)
-                                                          : static_cast<const VariableData&>(*std::array<const Variable<double>*, 3>{
-                                                                &DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z}[expected[q].component]);
-        EXPECT_EQ(&dofs[q]->GetVariable(), &v) << q;
+        EXPECT_EQ(&dofs[q]->GetVariable(), static_cast<const VariableData*>(&DofVariable(expected[q]))) << q;
     }
     Matrix mass, damping;
     pair->CalculateMassMatrix(mass, info);
@@ -215,7 +238,9 @@ TEST_P(FrictionlessMortarNames, TangentIsTheCentralDifferenceOfMinusRhs) {
             slave[j].Set(ACTIVE, state == 2 || (j + state) % 2 == 0);  // mixed in states 0 and 1, all active in 2
             slave[j].SetValue(INITIAL_PENALTY, 5.0 + 10.0 * u(rng));
             if (j % 2 == 1) slave[j].SetValue(DYNAMIC_FACTOR, 0.5 + 0.5 * u(rng));
-            slave[j].FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE) = -u(rng);
+            Array3 tangential = Array3::Zero();  // a non-zero tangential multiplier (components family)
+            tangential.head(row.dim) = Eigen::VectorXd::NullaryExpr(row.dim, [&] { return 0.2 * u(rng) - 0.1; });
+            SetMultiplier(slave[j], -u(rng), tangential);
         }
         pair->Initialize(info);
         Matrix lhs;
@@ -253,6 +278,12 @@ TEST_P(FrictionlessMortarNames, TangentIsTheCentralDifferenceOfMinusRhs) {
 /// only; the ALM contribution leaves it untouched) and the RHS of §3.1 (ALM) or §3.4 (penalty).
 class MatchingPairNames : public ::testing::TestWithParam<std::string> {};
 
+/// A tangential multiplier of the flat pairs (normal ±y in 2D, ±z in 3D): zero unless components family.
+Array3 Tangential(const ContactConditionName& row, int j) {
+    if (!IsComponents(row)) return Array3::Zero();
+    return row.dim == 2 ? Array3(0.03 * (j + 1), 0.0, 0.0) : Array3(0.02 * (j + 1), -0.01 * j, 0.0);
+}
+
 std::vector<std::string> MatchingPairRegisteredNames() {
     std::vector<std::string> names;
     for (const auto& row : RegisteredContactConditionNames())
@@ -287,7 +318,7 @@ TEST_P(MatchingPairNames, MatchingFlatPairUnderUniformGap) {
         slave[j].Set(ACTIVE, true);
         slave[j].SetValue(INITIAL_PENALTY, eps);
         lambda[j] = -0.1 * (j + 1);
-        slave[j].FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE) = lambda[j];
+        SetMultiplier(slave[j], lambda[j], Tangential(row, j));
     }
     pair->Initialize(info);
     pair->AddExplicitContribution(info);
@@ -305,15 +336,21 @@ TEST_P(MatchingPairNames, MatchingFlatPairUnderUniformGap) {
     Vector expected = Vector::Zero(row.matrix_size);
     for (int j = 0; j < ns; ++j) {
         const double gap = g * nodal_measure[j];
-        const double force = (IsPenalty(row) ? 0.0 : k * lambda[j]) + eps * gap;
         const Array3 n = slave[j].FastGetSolutionStepValue(NORMAL);
+        // Force vector: ε g̃ n (penalty), (k λ_n + ε g̃) n (ALM), k λ + ε g̃ n (components: tangential part included).
+        Array3 force = ((IsPenalty(row) ? 0.0 : k * lambda[j]) + eps * gap) * n;
+        if (IsComponents(row)) force += k * Tangential(row, j);
         int l = 0;
         while ((master[l].Coordinates() - slave[j].Coordinates()).head(d - 0).cwiseAbs().maxCoeff() > 2 * g) ++l;
         for (int c = 0; c < d; ++c) {
-            expected[d * nm + j * d + c] += force * nodal_measure[j] * n[c];
-            expected[l * d + c] -= force * nodal_measure[j] * n[c];
+            expected[d * nm + j * d + c] += force[c] * nodal_measure[j];
+            expected[l * d + c] -= force[c] * nodal_measure[j];
         }
-        if (!IsPenalty(row)) expected[d * (nm + ns) + j] = k * gap;
+        if (IsComponents(row))  // k g̃ n − k²/ε P λ, P λ = the tangential part
+            for (int c = 0; c < d; ++c)
+                expected[d * (nm + ns) + j * d + c] = k * gap * n[c] - k * k / eps * Tangential(row, j)[c];
+        else if (!IsPenalty(row))
+            expected[d * (nm + ns) + j] = k * gap;
     }
     EXPECT_LT((rhs - expected).norm(), 1e-10 * (1.0 + expected.norm())) << "rhs\n" << rhs.transpose() << "\nexpected\n"
                                                                      << expected.transpose();
@@ -357,6 +394,60 @@ TEST_P(PenaltyFrictionlessNames, InactiveNodesContributeNothingAndActiveOnesNeed
     EXPECT_GT(lhs.norm(), 0.0);
 }
 
+/// ALM families (§3.1, §3.2): on inactive nodes RHS_λ = −k²/ε λ, LHS_λλ = k²/ε I and nothing else, so the Newton
+/// step returns every multiplier (all components for the components family) to zero.
+class ALMInactiveNames : public ::testing::TestWithParam<std::string> {};
+
+std::vector<std::string> ALMRegisteredNames() {
+    std::vector<std::string> names;
+    for (const auto& row : RegisteredContactConditionNames())
+        if (!IsPenalty(row)) names.push_back(row.name);
+    return names;
+}
+
+TEST_P(ALMInactiveNames, InactiveNodesReturnTheMultipliersToZero) {
+    const auto& row = DecodedName(GetParam());
+    ContactPairModel model;
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    Eigen::MatrixXd s, m;
+    RandomPairCoordinates(row, rng, s, m);
+    auto pair = model.MakePair(GetParam(), s, m);
+    model.properties->SetValue(THICKNESS, 1.5);
+    UpdateNormals(*pair, row.dim);
+    const double k = 1.7;
+    ProcessInfo info;
+    info.SetValue(SCALE_FACTOR, k);
+    auto& slave = const_cast<Geometry&>(pair->GetParentGeometry());
+    for (std::size_t j = 0; j < slave.size(); ++j) {
+        slave[j].Set(ACTIVE, false);
+        slave[j].SetValue(INITIAL_PENALTY, 5.0 + 10.0 * u(rng));
+        slave[j].SetValue(DYNAMIC_FACTOR, 0.7);
+        SetMultiplier(slave[j], -u(rng), Array3(0.1 * u(rng), 0.1 * u(rng), row.dim == 3 ? 0.1 * u(rng) : 0.0));
+    }
+    pair->Initialize(info);
+    Matrix lhs;
+    Vector rhs;
+    pair->CalculateLocalSystem(lhs, rhs, info);
+    ASSERT_FALSE(pair->Is(ISOLATED));
+    const int nu = row.dim * (row.num_slave + row.num_master), nl = row.matrix_size - nu;
+    EXPECT_EQ(rhs.head(nu).norm(), 0.0);
+    EXPECT_EQ(lhs.topRows(nu).norm(), 0.0);
+    EXPECT_EQ(lhs.bottomLeftCorner(nl, nu).norm(), 0.0);
+    const auto dofs = LocalDofs(*pair, row);
+    for (int i = 0; i < nl; ++i) {
+        const LocalDof& dof = dofs[nu + i];
+        const double eps = dof.node->GetValue(INITIAL_PENALTY);
+        const double lambda = dof.component < 0 ? dof.node->FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE)
+                                                : dof.node->FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER)[dof.component - kVectorMultiplier];
+        for (int j = 0; j < nl; ++j) EXPECT_NEAR(lhs(nu + i, nu + j), i == j ? k * k / eps : 0.0, 1e-12) << i << " " << j;
+        const double delta = rhs[nu + i] / lhs(nu + i, nu + i);  // LHS Δq = RHS
+        EXPECT_NEAR(lambda + delta, 0.0, 1e-12) << i;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Registered, ALMInactiveNames, ::testing::ValuesIn(ALMRegisteredNames()),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 INSTANTIATE_TEST_SUITE_P(Registered, PenaltyFrictionlessNames, ::testing::ValuesIn(PenaltyRegisteredNames()),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 INSTANTIATE_TEST_SUITE_P(Registered, MatchingPairNames, ::testing::ValuesIn(MatchingPairRegisteredNames()),

@@ -1,0 +1,133 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_conditions/alm_frictionless_components_mortar_contact_condition.h"
+
+#include "custom_conditions/frictionless_mortar_contact_common.h"
+
+namespace contact_app {
+namespace {
+
+using namespace frictionless_detail;
+
+inline const Variable<double>* const kMultiplierComponents[] = {
+    &VECTOR_LAGRANGE_MULTIPLIER_X, &VECTOR_LAGRANGE_MULTIPLIER_Y, &VECTOR_LAGRANGE_MULTIPLIER_Z};
+
+/// RHS of kratos_residuals.md §3.2 for one pair, q = [u2 (d·n_m), u1 (d·n_s), λ (d·n_s)].
+template <class T, int TDim, int TNS, int TNM, class TState, class TVector>
+void AddFrictionlessComponentsResidual(const TState& s, double k, const NodalParameters<TNS>& p, TVector& rhs) {
+    using Vec = Eigen::Matrix<T, TDim, 1>;
+    constexpr int lambda_offset = TDim * (TNS + TNM);
+    for (int j = 0; j < TNS; ++j) {
+        const double eps = p.penalty[j];
+        const double k2_eps = k * k / eps;
+        const int row = lambda_offset + j * TDim;
+        if (!p.active[j]) {
+            for (int c = 0; c < TDim; ++c) rhs[row + c] += -k2_eps * s.multipliers[j * TDim + c];
+            continue;
+        }
+        const T gap = PairGap<T, TDim>(s, j);
+        T lambda_n = T(0.0);  // n·λ
+        for (int c = 0; c < TDim; ++c) lambda_n += s.normals(j, c) * s.multipliers[j * TDim + c];
+        Vec force, p_lambda;  // δ (k λ + ε g̃ n), P λ
+        for (int c = 0; c < TDim; ++c) {
+            force[c] = p.dynamic_factor[j] * (k * s.multipliers[j * TDim + c] + eps * gap * s.normals(j, c));
+            p_lambda[c] = s.multipliers[j * TDim + c] - s.normals(j, c) * lambda_n;
+        }
+        SpreadForce<T, TDim, TNS, TNM>(s, j, force, rhs);
+        T n_p_lambda = T(0.0);  // n·(P λ): Pᵀ P λ = P λ − n (n·P λ), kept as in the generated code
+        for (int c = 0; c < TDim; ++c) n_p_lambda += s.normals(j, c) * p_lambda[c];
+        for (int c = 0; c < TDim; ++c)
+            rhs[row + c] += k * gap * s.normals(j, c) - k2_eps * (p_lambda[c] - s.normals(j, c) * n_p_lambda);
+    }
+}
+
+}  // namespace
+
+#define ALMC_TEMPLATE template <int TDim, int TNS, bool TNV, int TNM>
+#define ALMC_CLASS AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<TDim, TNS, TNV, TNM>
+
+ALMC_TEMPLATE
+Condition::Pointer ALMC_CLASS::Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
+                                      Geometry::Pointer master) const {
+    return std::make_shared<ALMC_CLASS>(new_id, std::move(slave), std::move(properties), std::move(master));
+}
+
+ALMC_TEMPLATE
+void ALMC_CLASS::EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const {
+    DofsVectorType dofs;
+    GetDofList(dofs, rCurrentProcessInfo);
+    EquationIdsOf(dofs, rResult);
+}
+
+ALMC_TEMPLATE
+void ALMC_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&) const {
+    const Geometry& slave = this->GetParentGeometry();
+    rElementalDofList.clear();
+    rElementalDofList.reserve(BaseType::MatrixSize);
+    AppendDisplacementDofs<TDim, TNS, TNM>(slave, this->GetPairedGeometry(), rElementalDofList);
+    for (int j = 0; j < TNS; ++j)
+        for (int c = 0; c < TDim; ++c) rElementalDofList.push_back(&slave[j].GetDof(*kMultiplierComponents[c]));
+}
+
+ALMC_TEMPLATE
+int ALMC_CLASS::GetActiveInactiveValue() const {
+    return ActiveNodesValue<TNS>(this->GetParentGeometry());
+}
+
+ALMC_TEMPLATE
+void ALMC_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) {
+    AddFrictionlessExplicitContribution<TDim, TNS, TNM>(*this, rCurrentProcessInfo, false);
+}
+
+ALMC_TEMPLATE
+int ALMC_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
+    BaseType::Check(rCurrentProcessInfo);
+    const Geometry& slave = this->GetParentGeometry();
+    for (int j = 0; j < TNS; ++j) {
+        bool has = slave[j].SolutionStepsDataHas(VECTOR_LAGRANGE_MULTIPLIER);
+        for (int c = 0; c < TDim; ++c) has = has && slave[j].HasDofFor(*kMultiplierComponents[c]);
+        CONTACT_CHECK(has, InputError, "condition ", this->Id(), ": slave node ", slave[j].Id(),
+                      " lacks VECTOR_LAGRANGE_MULTIPLIER (historical variable and _X/_Y", TDim == 3 ? "/_Z" : "",
+                      " DoFs)\n  fix: use mortar_type \"ALMContactFrictionlessComponents\" so the solver adds them");
+    }
+    return 0;
+}
+
+ALMC_TEMPLATE
+typename ALMC_CLASS::BaseType::MultiplierVector ALMC_CLASS::MultiplierValues() const {
+    const Geometry& slave = this->GetParentGeometry();
+    typename BaseType::MultiplierVector lambda;
+    for (int j = 0; j < TNS; ++j)
+        lambda.template segment<TDim>(j * TDim) =
+            slave[j].FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER).template head<TDim>();
+    return lambda;
+}
+
+ALMC_TEMPLATE
+void ALMC_CLASS::AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
+                             LocalVector<double>& rhs) const {
+    const auto [k, p] = ReadALMParameters<TNS>(this->GetParentGeometry(), rCurrentProcessInfo, this->Id());
+    AddFrictionlessComponentsResidual<double, TDim, TNS, TNM>(state, k, p, rhs);
+}
+
+ALMC_TEMPLATE
+void ALMC_CLASS::AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
+                             LocalVector<ADScalar>& rhs) const {
+    const auto [k, p] = ReadALMParameters<TNS>(this->GetParentGeometry(), rCurrentProcessInfo, this->Id());
+    AddFrictionlessComponentsResidual<ADScalar, TDim, TNS, TNM>(state, k, p, rhs);
+}
+
+#undef ALMC_TEMPLATE
+#undef ALMC_CLASS
+
+template class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<2, 2, false, 2>;
+template class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<2, 2, true, 2>;
+template class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<3, 3, false, 3>;
+template class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<3, 3, true, 3>;
+template class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<3, 4, false, 4>;
+template class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<3, 4, true, 4>;
+template class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<3, 3, false, 4>;
+template class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<3, 3, true, 4>;
+template class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<3, 4, false, 3>;
+template class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<3, 4, true, 3>;
+
+}  // namespace contact_app

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include "custom_conditions/mortar_contact_condition.h"
+
+namespace contact_app {
+
+/// ALM frictionless mortar contact with a vector multiplier λ_j = VECTOR_LAGRANGE_MULTIPLIER per slave node
+/// (kratos_residuals.md §3.2). With g̃_j = −n_j·(D x1 − M x2)_j and P_j = I − n_j n_jᵀ:
+/// active node: S_j[δ_j (k λ_j + ε_j g̃_j n_j)] on the displacement rows (the full vector k λ_j, tangential
+/// part included), RHS_λj += k g̃_j n_j − k²/ε_j P_jᵀ P_j λ_j (the tangential part is regularised to zero);
+/// inactive node: RHS_λj += −k²/ε_j λ_j. k = SCALE_FACTOR (ProcessInfo), ε_j = INITIAL_PENALTY and
+/// δ_j = DYNAMIC_FACTOR (nodal, non-historical; δ = 1 when absent; δ only scales the displacement rows).
+/// LHS = −∂RHS/∂q by AD. Registers ALM[NV]FrictionlessComponentsMortarContactCondition{2D2N,3D3N,3D4N,3D3N4N,
+/// 3D4N3N} (no axisymmetric variant); local system [master u, slave u, slave λ (d per node)] of size d(2n_s + n_m).
+template <int TDim, int TNumNodes, bool TNormalVariation, int TNumNodesMaster = TNumNodes>
+class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition
+    : public MortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONLESS_COMPONENTS, TNormalVariation,
+                                    TNumNodesMaster> {
+public:
+    using BaseType = MortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONLESS_COMPONENTS, TNormalVariation,
+                                            TNumNodesMaster>;
+    using typename BaseType::ADScalar;
+    template <class T>
+    using State = typename BaseType::template State<T>;
+    template <class T>
+    using LocalVector = typename BaseType::template LocalVector<T>;
+    using BaseType::BaseType;
+    using BaseType::Create;
+
+    Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
+                              Geometry::Pointer master) const override;
+    /// @param[out] rResult [master DISPLACEMENT_*, slave DISPLACEMENT_*, slave VECTOR_LAGRANGE_MULTIPLIER_*]
+    /// @throws InputError if a DoF is missing
+    void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
+    void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
+    /// Σ_i 2^i over the slave nodes that are ACTIVE.
+    int GetActiveInactiveValue() const override;
+    /// Adds the pair's weighted gap g̃ to the historical WEIGHTED_GAP of the slave nodes (or flags ISOLATED).
+    void AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) override;
+    /// Base checks plus VECTOR_LAGRANGE_MULTIPLIER (historical) and its d component DoFs on the slave nodes.
+    int Check(const ProcessInfo& rCurrentProcessInfo) const override;
+
+protected:
+    typename BaseType::MultiplierVector MultiplierValues() const override;
+    void AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
+                     LocalVector<double>& rhs) const override;
+    void AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
+                     LocalVector<ADScalar>& rhs) const override;
+};
+
+}  // namespace contact_app
