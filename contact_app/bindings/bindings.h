@@ -21,5 +21,6 @@ void BindIO(py::module_& m);
 void BindRegistry(py::module_& m);
 void BindUtilities(py::module_& m);
 void BindSolving(py::module_& m);
+void BindContact(py::module_& m);
 
 }  // namespace contact_app::bindings

@@ -51,4 +51,5 @@ PYBIND11_MODULE(_core, m) {
     BindRegistry(m);
     BindUtilities(m);
     BindSolving(m);
+    BindContact(m);
 }
