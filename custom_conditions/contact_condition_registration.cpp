@@ -8,7 +8,11 @@
 #include "contact_app/kernel/geometries/geometry_factory.h"
 #include "contact_app/kernel/registry.h"
 #include "custom_conditions/alm_frictionless_components_mortar_contact_condition.h"
+#include "custom_conditions/alm_frictional_mortar_contact_condition.h"
 #include "custom_conditions/alm_frictionless_mortar_contact_condition.h"
+#include "custom_conditions/mesh_tying_mortar_condition.h"
+#include "custom_conditions/mpc_mortar_contact_condition.h"
+#include "custom_conditions/penalty_frictional_mortar_contact_condition.h"
 #include "custom_conditions/penalty_frictionless_mortar_contact_condition.h"
 
 namespace contact_app {
@@ -26,12 +30,14 @@ using Factory = std::shared_ptr<const Condition> (*)(const PairRow&, bool nv, bo
                                                       Geometry::Pointer master);
 
 struct FamilyRow {
-    const char* method;  ///< "ALM" or "Penalty"
-    const char* family;  ///< "Frictionless", "FrictionlessComponents", "Frictional"
-    FrictionalCase frictional_case;
+    const char* method;  ///< "ALM" or "Penalty" ("" for the non-contact families MeshTying and MPC)
+    const char* family;  ///< "Frictionless", "FrictionlessComponents", "Frictional", "MeshTying", "MPC"
+    FrictionalCase frictional_case;  ///< non-contact families: the case with the same local size (matrix_size)
     bool has_axisym;
     bool implemented;  ///< flip (and give the factory) when the family lands
     Factory factory;
+    bool has_nv = true;                           ///< mesh tying and MPC have no NV variant
+    const char* stem = "MortarContactCondition";  ///< "MortarCondition" for mesh tying
 };
 
 /// The plane prototypes of a family (5 pairs × NV). @throws InternalError for an axisymmetric or unknown row
@@ -53,6 +59,23 @@ std::shared_ptr<const Condition> MakePlaneFamily(const PairRow& pair, bool nv, b
     CONTACT_THROW(InternalError, "contact condition table: unknown pair ", pair.suffix);
 }
 
+/// The prototypes of a family without NV / axisymmetric variants (mesh tying, MPC): true mixed pairs.
+template <template <int, int, int> class TFamily>
+std::shared_ptr<const Condition> MakePairFamily(const PairRow& pair, bool nv, bool axisym, Geometry::Pointer s,
+                                                Geometry::Pointer m) {
+    CONTACT_CHECK(!nv && !axisym, InternalError, "condition table: the family has no NV / axisymmetric variant");
+#define CONTACT_APP_PAIR(D, NS, NM)                                     \
+    if (pair.dim == D && pair.num_slave == NS && pair.num_master == NM) \
+        return std::make_shared<const TFamily<D, NS, NM>>(0, s, nullptr, m);
+    CONTACT_APP_PAIR(2, 2, 2)
+    CONTACT_APP_PAIR(3, 3, 3)
+    CONTACT_APP_PAIR(3, 4, 4)
+    CONTACT_APP_PAIR(3, 3, 4)
+    CONTACT_APP_PAIR(3, 4, 3)
+#undef CONTACT_APP_PAIR
+    CONTACT_THROW(InternalError, "condition table: unknown pair ", pair.suffix);
+}
+
 /// The plane prototypes plus the 2D axisymmetric variant TAxisym.
 template <template <int, int, bool, int> class TFamily, template <int, bool> class TAxisym>
 std::shared_ptr<const Condition> MakeFamily(const PairRow& pair, bool nv, bool axisym, Geometry::Pointer s,
@@ -69,10 +92,18 @@ const FamilyRow kFamilies[] = {
                 AugmentedLagrangianMethodFrictionlessMortarContactAxisymCondition>},
     {"ALM", "FrictionlessComponents", FrictionalCase::FRICTIONLESS_COMPONENTS, false, true,
      MakePlaneFamily<AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition>},
-    {"ALM", "Frictional", FrictionalCase::FRICTIONAL, true, false, nullptr},
+    {"ALM", "Frictional", FrictionalCase::FRICTIONAL, true, true,
+     MakeFamily<AugmentedLagrangianMethodFrictionalMortarContactCondition,
+                AugmentedLagrangianMethodFrictionalMortarContactAxisymCondition>},
     {"Penalty", "Frictionless", FrictionalCase::FRICTIONLESS_PENALTY, true, true,
      MakeFamily<PenaltyMethodFrictionlessMortarContactCondition, PenaltyMethodFrictionlessMortarContactAxisymCondition>},
-    {"Penalty", "Frictional", FrictionalCase::FRICTIONAL_PENALTY, true, false, nullptr},
+    {"Penalty", "Frictional", FrictionalCase::FRICTIONAL_PENALTY, true, true,
+     MakeFamily<PenaltyMethodFrictionalMortarContactCondition, PenaltyMethodFrictionalMortarContactAxisymCondition>},
+    // Non-contact families: MeshTyingMortarCondition<pair> (size of the DISPLACEMENT tying, d(2n_s + n_m)) and
+    // MPCMortarContactCondition<pair> (d(n_s + n_m)).
+    {"", "MeshTying", FrictionalCase::FRICTIONLESS_COMPONENTS, false, true, MakePairFamily<MeshTyingMortarCondition>,
+     false, "MortarCondition"},
+    {"", "MPC", FrictionalCase::FRICTIONLESS_PENALTY, false, true, MakePairFamily<MPCMortarContactCondition>, false},
 };
 
 Geometry::Pointer PrototypeFace(int dim, int num_nodes) {
@@ -90,10 +121,10 @@ void ForEachImplementedName(TVisit&& visit) {
         for (const bool nv : {false, true})
             for (const bool axisym : {false, true})
                 for (const PairRow& pair : kPairs) {
-                    if (axisym && (!family.has_axisym || pair.dim != 2)) continue;
+                    if ((axisym && (!family.has_axisym || pair.dim != 2)) || (nv && !family.has_nv)) continue;
                     ContactConditionName row;
                     row.name = std::string(family.method) + (nv ? "NV" : "") + family.family +
-                               (axisym ? "Axisym" : "") + "MortarContactCondition" + pair.suffix;
+                               (axisym ? "Axisym" : "") + family.stem + pair.suffix;
                     row.family = std::string(family.method) + family.family;
                     row.normal_variation = nv;
                     row.axisymmetric = axisym;

@@ -204,6 +204,7 @@ void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Pr
         const MortarIntegrator<TDim, TNS, TNM, double> integrator(integration, segmentation);
         const auto pair = IntegrateMortarPair<TDim, TNS, TNM>(integrator, x1, slave_normal, x2, normals, true);
         if (!pair.used) return Set(ISOLATED, true);
+        InitializeResidual(pair.operators, rCurrentProcessInfo);
         const State<double> state{x1, x2, normals, pair.operators, lambda};
         LocalVector<double> rhs = LocalVector<double>::Zero();
         AddResidual(state, rCurrentProcessInfo, rhs);
@@ -236,6 +237,10 @@ void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Pr
     state.operators.M = ToLocalDofs<MatrixSize, slave_dofs, master_dofs>(pair.operators.M);
     for (int i = 0; i < NumMultipliers; ++i)
         state.multipliers[i] = ADScalar::Variable(lambda[i], NumCoordinateDofs + i);
+    MortarOperators<double, TNS, TNM> operator_values;
+    operator_values.D = Values(pair.operators.D);
+    operator_values.M = Values(pair.operators.M);
+    InitializeResidual(operator_values, rCurrentProcessInfo);
     LocalVector<ADScalar> rhs;
     for (int i = 0; i < MatrixSize; ++i) rhs[i] = ADScalar(0.0);
     AddResidual(state, rCurrentProcessInfo, rhs);
@@ -261,6 +266,8 @@ void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Pr
 CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONLESS)
 CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONLESS_COMPONENTS)
 CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONLESS_PENALTY)
+CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONAL)
+CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONAL_PENALTY)
 #undef CONTACT_APP_INSTANTIATE_MORTAR
 
 }  // namespace contact_app

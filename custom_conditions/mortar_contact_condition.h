@@ -106,6 +106,11 @@ protected:
                              LocalVector<double>& rhs) const;
     virtual void AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
                              LocalVector<ADScalar>& rhs) const;
+    /// Called once per evaluation after the pair is integrated, before AddResidual, with the values of D and M
+    /// (non-const: the frictional families choose the objective / non-objective slip here and record it in
+    /// MODIFIED). The default does nothing.
+    virtual void InitializeResidual(const MortarOperators<double, TNumNodes, TNumNodesMaster>& operators,
+                                    const ProcessInfo& rCurrentProcessInfo) {}
 
 private:
     void CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const ProcessInfo& rCurrentProcessInfo);

@@ -6,6 +6,7 @@
 #include "contact_app/application.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/geometries/coupling_geometry.h"
+#include "contact_app/kernel/serializer.h"
 
 namespace contact_app {
 namespace {
@@ -80,6 +81,16 @@ void PairedCondition::InitializeNonLinearIteration(const ProcessInfo& rCurrentPr
 int PairedCondition::Check(const ProcessInfo& rCurrentProcessInfo) const {
     pGetPairedGeometry();  // throws the explanatory message when unpaired
     return Condition::Check(rCurrentProcessInfo);
+}
+
+void PairedCondition::Save(Serializer& rSerializer) const {
+    Condition::Save(rSerializer);
+    rSerializer.Save("PairedNormal", mPairedNormal);
+}
+
+void PairedCondition::Load(Serializer& rSerializer) {
+    Condition::Load(rSerializer);
+    rSerializer.Load("PairedNormal", mPairedNormal);
 }
 
 std::string PairedCondition::Info() const {

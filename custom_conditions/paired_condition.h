@@ -31,6 +31,9 @@ public:
     /// @throws InputError naming the condition id when no master geometry was paired (the .mdpa case)
     int Check(const ProcessInfo& rCurrentProcessInfo) const override;
     std::string Info() const override;
+    /// Base state plus the cached master normal.
+    void Save(Serializer& rSerializer) const override;
+    void Load(Serializer& rSerializer) override;
 
     /// Whether a master face is paired.
     bool HasPairedGeometry() const { return GetGeometry().NumberOfGeometryParts() == 2; }

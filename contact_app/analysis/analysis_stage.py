@@ -107,7 +107,12 @@ class AnalysisStage:
     def RunSolutionLoop(self) -> None:
         """Solve the steps while ``time < end_time``."""
         solver = self._GetSolver()
-        self.reporter.begin_loop(self.start_time, self.end_time, self._ExpectedSteps())
+        self.reporter.begin_loop(
+            self.start_time,
+            self.end_time,
+            self._ExpectedSteps(),
+            contact_columns=hasattr(self._GetSolver(), "ContactStatus"),
+        )
         while self.KeepAdvancingSolutionLoop():
             with self.reporter.phase("solve"):
                 self.time = solver.AdvanceInTime(self.time)
@@ -247,6 +252,7 @@ class AnalysisStage:
                     criterion.displacement.LastRatio(),
                     criterion.displacement.LastAbsolute(),
                 )
+        status = getattr(solver, "ContactStatus", None)
         return StepRecord(
             info[ca.STEP],
             info[ca.TIME],
@@ -254,6 +260,7 @@ class AnalysisStage:
             residual,
             increment,
             converged,
+            status() if status is not None else None,
         )
 
     def _StopOnNonConvergence(self) -> None:

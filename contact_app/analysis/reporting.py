@@ -25,6 +25,7 @@ _HEADER = (
     f"{'step':>6}  {'time':>12}  {'iter':>4}  {'res ratio':>9}  {'res abs':>9}  "
     f"{'dx ratio':>9}  {'dx abs':>9}  converged"
 )
+_CONTACT_HEADER = f"  {'active':>6}  {'slip':>6}  {'pairs':>6}  {'max pen.':>9}"
 
 
 @dataclass
@@ -38,6 +39,8 @@ class StepRecord:
         residual: (ratio, absolute) of the residual criterion, None if not used.
         increment: (ratio, absolute) of the displacement criterion, None if not used.
         converged: whether the step converged.
+        contact: (active slave nodes, slipping ones, pairs, max penetration) of a contact
+            analysis, None otherwise.
 
     """
 
@@ -47,6 +50,7 @@ class StepRecord:
     residual: tuple[float, float] | None
     increment: tuple[float, float] | None
     converged: bool
+    contact: tuple[int, int, int, float] | None = None
 
 
 def _norm(value: float | None) -> str:
@@ -79,6 +83,7 @@ class Reporter:
         self.started_wall = time.time()
         self._span = (0.0, 0.0)
         self._expected: int | None = None
+        self._contact_columns = False
 
     def _print(self, text: str = "") -> None:
         if self.stream is not None:
@@ -100,8 +105,15 @@ class Reporter:
         self.assembly += float(timings.get("build", 0.0)) + float(timings.get("setup", 0.0))
         self.linear_solve += float(timings.get("solve", 0.0))
 
-    def begin_loop(self, start_time: float, end_time: float, expected_steps: int | None) -> None:
-        """Print the table header; decide on the progress bar."""
+    def begin_loop(
+        self,
+        start_time: float,
+        end_time: float,
+        expected_steps: int | None,
+        contact_columns: bool = False,
+    ) -> None:
+        """Print the table header (with the contact columns of a contact analysis)."""
+        self._contact_columns = contact_columns
         self._span = (start_time, end_time)
         self._expected = expected_steps
         several = expected_steps is None or expected_steps > 1
@@ -111,18 +123,23 @@ class Reporter:
                 f"no step to solve: start_time {start_time} is not below end_time {end_time}"
             )
             return
-        self._print(_HEADER)
+        self._print(_HEADER + (_CONTACT_HEADER if contact_columns else ""))
 
     def record_step(self, record: StepRecord) -> None:
         """Store a step and print its row."""
         self.steps.append(record)
         residual = record.residual or (None, None)
         increment = record.increment or (None, None)
-        self._print(
+        row = (
             f"{record.step:>6}  {record.time:12.6e}  {record.iterations:>4}  {_norm(residual[0])}  "
             f"{_norm(residual[1])}  {_norm(increment[0])}  {_norm(increment[1])}  "
             + ("yes" if record.converged else "NO")
         )
+        if self._contact_columns and record.contact is not None:
+            active, slip, pairs, penetration = record.contact
+            row = row[: row.rfind("  ") + 2] + f"{row[row.rfind('  ') + 2 :]:>9}"
+            row += f"  {active:>6}  {slip:>6}  {pairs:>6}  {_norm(penetration)}"
+        self._print(row)
 
     def _DrawBar(self) -> None:
         if not self._progress_on or self.stream is None or not self.steps:

@@ -8,6 +8,7 @@
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/model_part.h"
 #include "contact_app/kernel/registry.h"
+#include "contact_app/kernel/serializer.h"
 #include "custom_conditions/paired_condition.h"
 
 namespace contact_app::bindings {
@@ -70,7 +71,23 @@ void BindContact(py::module_& m) {
             "The slave face of a paired condition.")
         .def(
             "IsPaired", [](const Condition& self) { return dynamic_cast<const PairedCondition*>(&self) != nullptr; },
-            "True for contact, mesh-tying and MPC pair conditions.");
+            "True for contact, mesh-tying and MPC pair conditions.")
+        .def(
+            "Save",
+            [](const Condition& self) {
+                Serializer serializer;
+                self.Save(serializer);
+                return py::bytes(serializer.Data());
+            },
+            "The restart state of the condition (id, flags and, for pairs, the master normal and the frictional "
+            "start-of-step operators) as bytes.")
+        .def(
+            "Load",
+            [](Condition& self, const py::bytes& data) {
+                Serializer serializer{std::string(data)};
+                self.Load(serializer);
+            },
+            py::arg("data"), "Restores the state written by Save() of a condition of the same class; InputError otherwise.");
 }
 
 }  // namespace contact_app::bindings

@@ -60,7 +60,12 @@ void BindProperties(py::module_& m) {
     py::class_<Properties, std::shared_ptr<Properties>> properties(
         m, "Properties", "Material and condition parameters shared by entities (Kratos Properties).");
     properties.def(py::init<IndexType>(), py::arg("id"), "Stand-alone properties (use ModelPart.CreateNewProperties).")
-        .def_property_readonly("Id", &Properties::Id, "Properties id.");
+        .def_property_readonly("Id", &Properties::Id, "Properties id.")
+        .def(
+            "CopyValuesFrom", [](Properties& self, const Properties& other) { self.Data() = other.Data(); },
+            py::arg("other"),
+            "Replaces the stored values (not the tables) by those of other; the contact processes give each pair "
+            "property the material values of its body this way.");
     // The law overloads come first: the generic pointer-variable overload would otherwise refuse them.
     using LawVariable = Variable<std::shared_ptr<ConstitutiveLaw>>;
     auto set_law = [](Properties& self, const LawVariable& variable, std::shared_ptr<ConstitutiveLaw> law) {

@@ -25,7 +25,14 @@ void BindUtilities(py::module_& m) {
                 }
             },
             py::arg("nodes"), py::arg("variable") = VariableObject(DISPLACEMENT), py::arg("buffer_step") = 0,
-            "Current coordinates = initial + historical variable (DISPLACEMENT) for every node of the iterable.");
+            "Current coordinates = initial + historical variable (DISPLACEMENT) for every node of the iterable.")
+        .def(
+            "SetFlag",
+            [](const VariableUtils&, const Flags& flag, bool value, py::iterable entities) {
+                for (py::handle item : entities) item.cast<Flags&>().Set(flag, value);
+            },
+            py::arg("flag"), py::arg("value"), py::arg("entities"),
+            "Sets flag to value on every node / element / condition of the iterable.");
 }
 
 }  // namespace contact_app::bindings

@@ -22,5 +22,8 @@ void BindRegistry(py::module_& m);
 void BindUtilities(py::module_& m);
 void BindSolving(py::module_& m);
 void BindContact(py::module_& m);
+void BindContactProcesses(py::module_& m);
+void BindContactSearch(py::module_& m);
+void BindContactStrategies(py::module_& m);
 
 }  // namespace contact_app::bindings

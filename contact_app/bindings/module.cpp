@@ -3,6 +3,7 @@
 
 #include "contact_app/application.h"
 #include "custom_conditions/contact_condition_registration.h"
+#include "custom_strategies/contact_master_slave_constraint.h"
 #include "contact_app/bindings/bindings.h"
 #include "contact_app/kernel/exceptions.h"
 
@@ -39,6 +40,7 @@ PYBIND11_MODULE(_core, m) {
     m.doc() = "Compiled core of contact_app (private: import contact_app instead).";
     contact_app::RegisterContactApplication();
     contact_app::RegisterContactConditions();  // not in RegisterContactApplication: avoids a library cycle
+    contact_app::RegisterContactMasterSlaveConstraints();
     BindExceptions(m);
     BindVariables(m);
     BindFlags(m);
@@ -52,4 +54,7 @@ PYBIND11_MODULE(_core, m) {
     BindUtilities(m);
     BindSolving(m);
     BindContact(m);
+    BindContactProcesses(m);
+    BindContactSearch(m);
+    BindContactStrategies(m);
 }

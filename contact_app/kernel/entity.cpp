@@ -5,6 +5,7 @@
 #include "contact_app/kernel/element.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/node.h"
+#include "contact_app/kernel/serializer.h"
 
 namespace contact_app {
 
@@ -151,6 +152,24 @@ std::string Entity<TDerived>::Info() const {
     std::string kind = KindName();
     kind[0] = static_cast<char>(std::toupper(kind[0]));
     return kind + " #" + std::to_string(mId) + " (" + mGeometry->Name() + ")";
+}
+
+template <class TDerived>
+void Entity<TDerived>::Save(Serializer& rSerializer) const {
+    rSerializer.Save("Id", mId);
+    rSerializer.Save("FlagsDefined", static_cast<std::size_t>(DefinedBits()));
+    rSerializer.Save("FlagsValues", static_cast<std::size_t>(ValueBits()));
+}
+
+template <class TDerived>
+void Entity<TDerived>::Load(Serializer& rSerializer) {
+    std::size_t defined = 0, values = 0;
+    rSerializer.Load("Id", mId);
+    rSerializer.Load("FlagsDefined", defined);
+    rSerializer.Load("FlagsValues", values);
+    Clear();
+    for (int bit = 0; bit < 64; ++bit)
+        if ((defined >> bit) & 1u) Set(Flags::Create(bit), ((values >> bit) & 1u) != 0);
 }
 
 template class Entity<Element>;

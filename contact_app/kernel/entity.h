@@ -14,6 +14,8 @@
 
 namespace contact_app {
 
+class Serializer;
+
 /// The finite-element interface shared by Element and Condition (Kratos Element/Condition API):
 /// id, geometry, properties, flags, non-historical values and the life-cycle hooks a solver calls.
 /// The base implementation contributes nothing (a "mesh" entity): empty DoF list, 0×0 local
@@ -85,6 +87,12 @@ public:
     virtual int Check(const ProcessInfo& rCurrentProcessInfo) const;
     /// Short description, e.g. `Element #3 (Quadrilateral2D4)`.
     virtual std::string Info() const;
+
+    // -- Restart state (Kratos save/load). The base stores the id and the flags; geometry, properties and
+    //    non-historical values belong to the model part. Derived classes append their members after it. --
+    virtual void Save(Serializer& rSerializer) const;
+    /// @throws InputError if the buffer was not written by Save() of the same class
+    virtual void Load(Serializer& rSerializer);
 
 protected:
     /// Kind name used in messages ("element" / "condition").

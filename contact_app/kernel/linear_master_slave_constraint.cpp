@@ -34,6 +34,20 @@ void LinearMasterSlaveConstraint::CalculateLocalSystem(Matrix& rTransformationMa
     rConstantVector = mConstant;
 }
 
+void LinearMasterSlaveConstraint::SetLocalSystem(const Matrix& rTransformationMatrix, const Vector& rConstantVector,
+                                                 const ProcessInfo&) {
+    const auto slaves = static_cast<Eigen::Index>(GetSlaveDofsVector().size());
+    const auto masters = static_cast<Eigen::Index>(GetMasterDofsVector().size());
+    CONTACT_CHECK(rTransformationMatrix.rows() == slaves && rTransformationMatrix.cols() == masters, InputError,
+                  Info(), ": SetLocalSystem got a ", rTransformationMatrix.rows(), "x", rTransformationMatrix.cols(),
+                  " relation matrix, expected ", slaves, "x", masters,
+                  " (slave DoFs x master DoFs)\n  fix: call SetDofList with the matching DoF lists first");
+    CONTACT_CHECK(rConstantVector.size() == slaves, InputError, Info(), ": SetLocalSystem got ",
+                  rConstantVector.size(), " constants, expected one per slave DoF (", slaves, ")");
+    mRelation = rTransformationMatrix;
+    mConstant = rConstantVector;
+}
+
 std::string LinearMasterSlaveConstraint::Info() const {
     return "LinearMasterSlaveConstraint #" + std::to_string(Id());
 }

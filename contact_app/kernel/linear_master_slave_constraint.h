@@ -18,6 +18,9 @@ public:
                    const Vector& constant) const override;
     void CalculateLocalSystem(Matrix& rTransformationMatrix, Vector& rConstantVector,
                               const ProcessInfo& rCurrentProcessInfo) override;
+    /// @throws InputError if T is not slaves × masters or c not one entry per slave (set the DoF lists first)
+    void SetLocalSystem(const Matrix& rTransformationMatrix, const Vector& rConstantVector,
+                        const ProcessInfo& rCurrentProcessInfo) override;
     std::string Info() const override;
 
 private:

@@ -46,6 +46,11 @@ void MasterSlaveConstraint::CalculateLocalSystem(Matrix& rTransformationMatrix, 
     rConstantVector.setZero(static_cast<Eigen::Index>(mSlaveDofs.size()));
 }
 
+void MasterSlaveConstraint::SetLocalSystem(const Matrix&, const Vector&, const ProcessInfo&) {
+    CONTACT_THROW(InputError, Info(), " does not store a relation matrix (SetLocalSystem)",
+                  "\n  fix: use a LinearMasterSlaveConstraint or a ContactMasterSlaveConstraint");
+}
+
 void MasterSlaveConstraint::Apply(const ProcessInfo& rCurrentProcessInfo) {
     Matrix relation;
     Vector constant;

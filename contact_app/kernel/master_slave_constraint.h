@@ -50,6 +50,10 @@ public:
     /// The relation T (slaves × masters) and constant c. Base: an empty relation.
     virtual void CalculateLocalSystem(Matrix& rTransformationMatrix, Vector& rConstantVector,
                                       const ProcessInfo& rCurrentProcessInfo);
+    /// Replaces T and c (a condition refreshing its constraint, e.g. the MPC mortar contact condition).
+    /// @throws InputError in the base (no stored relation) or if the sizes do not match the DoF lists
+    virtual void SetLocalSystem(const Matrix& rTransformationMatrix, const Vector& rConstantVector,
+                                const ProcessInfo& rCurrentProcessInfo);
     /// Sets the slave values to T · u_master + c.
     virtual void Apply(const ProcessInfo& rCurrentProcessInfo);
     virtual int Check(const ProcessInfo& rCurrentProcessInfo) const;

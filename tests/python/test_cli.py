@@ -304,7 +304,7 @@ BAD_INPUTS: list[tuple[str, Callable[[Path], None], str]] = [
     (
         "contact_settings",
         _solver(lambda s: s.update(contact_settings={"mortar_type": "ALMContactFrictionless"})),
-        "contact solvers arrive with the contact issue",
+        'no "Contact" sub model part',
     ),
     (
         "contact_process",
@@ -319,7 +319,7 @@ BAD_INPUTS: list[tuple[str, Callable[[Path], None], str]] = [
                 ]
             )
         ),
-        'contact process module "alm_contact_process"',
+        'mortar_type = "ALMContactFrictionless"',
     ),
     (
         "legacy_process_lists",

@@ -62,4 +62,9 @@ def test_package_registers_the_penalty_frictionless_contact_conditions() -> None
         assert f"PenaltyFrictionlessMortarContactCondition{pair}" in names
         assert f"PenaltyNVFrictionlessMortarContactCondition{pair}" in names
     assert "PenaltyFrictionlessAxisymMortarContactCondition2D2N" in names
-    assert not any(name.startswith("PenaltyFrictionalMortar") for name in names)
+    # All 68 documented contact names (58 contact families + 5 mesh tying + 5 MPC), the constraint.
+    contact = [n for n in names if "MortarContactCondition" in n or n.startswith("MeshTying")]
+    assert len(contact) == 68
+    frictional = ("PenaltyFrictionalMortar", "PenaltyNVFrictionalMortar")
+    assert sum(n.startswith(frictional) for n in names) == 10
+    assert "ContactMasterSlaveConstraint" in ca.registered_constraints()

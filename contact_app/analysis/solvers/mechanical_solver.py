@@ -83,7 +83,12 @@ MODEL_IMPORT_KEYS: dict[str, Any] = {
     "reorder": False,
     "skip_timer": True,
     "ignore_variables_not_in_solution_step_data": False,
+    "mesh_mapping": {},
 }
+#: Extensions read through meshio when input_type is left at "mdpa" (detection by extension).
+MESHIO_EXTENSIONS = (
+    ".msh", ".vtu", ".vtk", ".inp", ".med", ".xdmf", ".xmf", ".mesh", ".obj", ".ply"
+)
 
 _FEATURE_FLAGS = {
     "volumetric_strain_dofs": "mixed displacement/volumetric-strain elements",
@@ -123,6 +128,9 @@ class MechanicalSolver:
         self._builder_and_solver: Any = None
         self._materials: MaterialsReader | None = None
         self._mdpa_path = ""
+        self._meshio_path = ""
+        self._meshio_mapping: dict[str, Any] = {}
+        self._meshio_where = ""
 
         self._ConvertDeprecatedSettings()
         had_domain_size = self.settings.Has("domain_size")
@@ -268,7 +276,7 @@ class MechanicalSolver:
             if settings[key].GetBool():
                 raise not_supported(settings, key, feature, f'set "{key}": false or remove it')
         choice(settings, "analysis_type", ("linear", "non_linear"))
-        check_criterion_name(settings)
+        self._CheckCriterionName()
         self._ValidateStrategySettings()
         self._ValidateBuilderSettings()
         self._ValidateLinearSolverSettings()
@@ -276,6 +284,10 @@ class MechanicalSolver:
         self._ValidateModelImport()
         self._ValidateMaterialImport()
         self._ValidateAuxiliaryLists()
+
+    def _CheckCriterionName(self) -> None:
+        """Refuse unknown criterion names (the contact solvers also accept the contact ones)."""
+        check_criterion_name(self.settings)
 
     def _ValidateStrategySettings(self) -> None:
         strategy = self.settings["solving_strategy_settings"]
@@ -405,12 +417,41 @@ class MechanicalSolver:
         settings = self.settings["model_import_settings"]
         settings.ValidateAndAssignDefaults(MODEL_IMPORT_KEYS)
         kind = choice(
-            settings, "input_type", ("mdpa", "use_input_model_part", "rest"), "input_type"
+            settings,
+            "input_type",
+            ("mdpa", "meshio", "use_input_model_part", "rest"),
+            "input_type",
         )
         if kind == "rest":
             raise not_supported(settings, "input_type", "restart input", 'use "mdpa"')
+        filename = settings["input_filename"].GetString()
+        if kind == "mdpa" and filename.lower().endswith(MESHIO_EXTENSIONS):
+            kind = "meshio"
+        if kind == "meshio":
+            if not filename:
+                raise error(
+                    settings,
+                    "input_filename",
+                    'missing required key "input_filename"',
+                    "the mesh file name with its extension, e.g. hertz_2d.msh",
+                )
+            self._meshio_path = self.paths.input_path(
+                filename, settings.Where("input_filename"), "mesh file"
+            )
+            if not settings["mesh_mapping"].IsSubParameter():
+                raise error(settings, "mesh_mapping", "mesh_mapping is not an object", "{...}")
+            self._meshio_mapping = settings["mesh_mapping"].GetValue()
+            self._meshio_where = settings.Where("mesh_mapping")
+            return
+        if settings["mesh_mapping"].size():
+            raise error(
+                settings,
+                "mesh_mapping",
+                'mesh_mapping is only read with "input_type": "meshio"',
+                "no mesh_mapping for an .mdpa file",
+                "remove it, or read the mesh through meshio",
+            )
         if kind == "mdpa":
-            filename = settings["input_filename"].GetString()
             if not filename:
                 raise error(
                     settings,
@@ -546,6 +587,12 @@ class MechanicalSolver:
         """Read the mdpa file (``input_type`` "mdpa"); nothing for "use_input_model_part"."""
         if self._mdpa_path:
             ca.ModelPartIO(self._mdpa_path).ReadModelPart(self.main_model_part)
+        elif self._meshio_path:
+            from ...io import ImportMeshioModelPart
+
+            ImportMeshioModelPart(
+                self.main_model_part, self._meshio_path, self._meshio_mapping, self._meshio_where
+            )
 
     def PrepareModelPart(self) -> None:
         """Assign the materials, set and fill the history buffer, check the computing part."""

@@ -252,6 +252,7 @@ void BuilderAndSolver::BuildAndSolve(Scheme& rScheme, ModelPart& rModelPart, Spa
     }
     mConstraintsApplied = false;
     ApplyDirichletConditions(rScheme, rModelPart, rA, rDx, rB);
+    if (mLinearSolver->AdditionalPhysicalDataIsNeeded()) mLinearSolver->ProvideAdditionalData(mDofSet, rModelPart);
     SystemSolve(rA, rDx, rB);
 }
 

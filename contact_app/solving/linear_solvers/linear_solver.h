@@ -3,10 +3,14 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "contact_app/solving/system_types.h"
 
 namespace contact_app {
+
+class Dof;
+class ModelPart;
 
 /// Solves A x = b for the global system (Kratos LinearSolver). Direct solvers keep their
 /// symbolic factorisation while the sparsity pattern of A is unchanged.
@@ -25,6 +29,10 @@ public:
     virtual std::string Info() const = 0;
     /// Number of symbolic analyses performed so far (a pattern-reuse diagnostic).
     virtual std::size_t NumberOfSymbolicAnalyses() const { return 0; }
+    /// True when Solve needs to know which DoF each equation is (condensing solvers).
+    virtual bool AdditionalPhysicalDataIsNeeded() const { return false; }
+    /// The DoF set (equation id = position in the system) and the model part of the next Solve.
+    virtual void ProvideAdditionalData(const std::vector<Dof*>& rDofSet, ModelPart& rModelPart) {}
 };
 
 }  // namespace contact_app

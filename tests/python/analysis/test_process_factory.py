@@ -99,7 +99,7 @@ def test_gid_output_is_skipped_with_a_warning(
                 "python_module": "alm_contact_process",
                 "kratos_module": "ContactStructuralMechanicsApplication",
             },
-            'the contact process module "alm_contact_process"',
+            'unknown key "variable_name"',
         ),
     ],
 )

@@ -70,8 +70,8 @@ def test_create_solver_reads_the_whole_project_parameters() -> None:
         ),
         (
             {"solver_type": "Static", "contact_settings": {}},
-            ca.ConfigurationError,
-            "contact solvers arrive",
+            ca.InputError,
+            "mortar_type is empty",
         ),
         (
             {"solver_type": "Dynamic", "mpc_contact_settings": {}},

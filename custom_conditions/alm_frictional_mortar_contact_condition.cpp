@@ -1,0 +1,201 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_conditions/alm_frictional_mortar_contact_condition.h"
+
+namespace contact_app {
+namespace {
+
+using namespace frictional_detail;
+
+inline const Variable<double>* const kMultiplierComponents[] = {
+    &VECTOR_LAGRANGE_MULTIPLIER_X, &VECTOR_LAGRANGE_MULTIPLIER_Y, &VECTOR_LAGRANGE_MULTIPLIER_Z};
+
+/// RHS of kratos_residuals.md §3.3.1 for one pair, q = [u2 (d·n_m), u1 (d·n_s), λ (d·n_s)].
+template <class T, int TDim, int TNS, int TNM, class TState, class TVector>
+void AddALMFrictionalResidual(const TState& s, double k, const FrictionalParameters<TDim, TNS>& p,
+                              const SlipData<TDim, TNS, TNM>& slip, TVector& rhs) {
+    using Vec = Eigen::Matrix<T, TDim, 1>;
+    constexpr int lambda_offset = TDim * (TNS + TNM);
+    for (int j = 0; j < TNS; ++j) {
+        const double eps = p.nodal.penalty[j];
+        const int row = lambda_offset + j * TDim;
+        const Vec n = s.normals.row(j).transpose();
+        const Vec lambda = s.multipliers.template segment<TDim>(j * TDim);
+        const T lambda_n = n.dot(lambda);
+        const Vec p_lambda = ProjectTangent<T, TDim>(s, j, lambda);
+        Vec lambda_row;
+        if (!p.nodal.active[j]) {  // −k²/ε λ_n n − k²/(κε) PᵀPλ
+            lambda_row = n * (-(k * k / eps) * lambda_n) -
+                         ProjectTangent<T, TDim>(s, j, p_lambda) * (k * k / (p.tangent_factor * eps));
+            for (int c = 0; c < TDim; ++c) rhs[row + c] += lambda_row[c];
+            continue;
+        }
+        const T gap = PairGap<T, TDim>(s, j);
+        Vec force = lambda * k + n * (eps * gap);
+        lambda_row = n * (k * gap);
+        if (p.slip[j]) {  // k λ_τ = −μ λ̄_n t enforced by −k/ε Pᵀ(kPλ + μ λ̄_n t)
+            const T augmented_normal = k * lambda_n + eps * gap;
+            const Vec tangent = p.tangent.row(j).transpose().template cast<T>();
+            const Vec traction = p_lambda * k + tangent * (p.mu[j] * augmented_normal);
+            lambda_row -= ProjectTangent<T, TDim>(s, j, traction) * (k / eps);
+        } else {  // zero weighted slip of the step, stick penalty κ ε s
+            const Vec s_j = TangentSlip<T, TDim, TNS, TNM>(s, slip, j);
+            force += s_j * (p.tangent_factor * eps);
+            lambda_row += ProjectTangent<T, TDim>(s, j, s_j) * k;
+        }
+        SpreadForce<T, TDim, TNS, TNM>(s, j, Vec(force * p.nodal.dynamic_factor[j]), rhs);
+        for (int c = 0; c < TDim; ++c) rhs[row + c] += lambda_row[c];
+    }
+}
+
+}  // namespace
+
+#define ALMF_TEMPLATE template <int TDim, int TNS, bool TNV, int TNM>
+#define ALMF_CLASS AugmentedLagrangianMethodFrictionalMortarContactCondition<TDim, TNS, TNV, TNM>
+
+ALMF_TEMPLATE
+Condition::Pointer ALMF_CLASS::Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
+                                      Geometry::Pointer master) const {
+    return std::make_shared<ALMF_CLASS>(new_id, std::move(slave), std::move(properties), std::move(master));
+}
+
+ALMF_TEMPLATE
+void ALMF_CLASS::Initialize(const ProcessInfo& rCurrentProcessInfo) {
+    BaseType::Initialize(rCurrentProcessInfo);
+    mPreviousMortarOperators.Reset();
+}
+
+ALMF_TEMPLATE
+void ALMF_CLASS::InitializeSolutionStep(const ProcessInfo& rCurrentProcessInfo) {
+    BaseType::InitializeSolutionStep(rCurrentProcessInfo);
+    ComputePreviousOperatorsOnce<TDim, TNS, TNM>(*this, rCurrentProcessInfo, mPreviousMortarOperators);
+}
+
+ALMF_TEMPLATE
+void ALMF_CLASS::FinalizeSolutionStep(const ProcessInfo& rCurrentProcessInfo) {
+    BaseType::FinalizeSolutionStep(rCurrentProcessInfo);
+    mPreviousMortarOperators.initialized = false;
+}
+
+ALMF_TEMPLATE
+void ALMF_CLASS::EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const {
+    DofsVectorType dofs;
+    GetDofList(dofs, rCurrentProcessInfo);
+    EquationIdsOf(dofs, rResult);
+}
+
+ALMF_TEMPLATE
+void ALMF_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&) const {
+    const Geometry& slave = this->GetParentGeometry();
+    rElementalDofList.clear();
+    rElementalDofList.reserve(BaseType::MatrixSize);
+    AppendDisplacementDofs<TDim, TNS, TNM>(slave, this->GetPairedGeometry(), rElementalDofList);
+    for (int j = 0; j < TNS; ++j)
+        for (int c = 0; c < TDim; ++c) rElementalDofList.push_back(&slave[j].GetDof(*kMultiplierComponents[c]));
+}
+
+ALMF_TEMPLATE
+int ALMF_CLASS::GetActiveInactiveValue() const {
+    return FrictionalStateValue<TNS>(this->GetParentGeometry());
+}
+
+ALMF_TEMPLATE
+void ALMF_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) {
+    AddFrictionalExplicitContribution<TDim, TNS, TNM>(*this, rCurrentProcessInfo, mPreviousMortarOperators);
+}
+
+ALMF_TEMPLATE
+int ALMF_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
+    BaseType::Check(rCurrentProcessInfo);
+    const Geometry& slave = this->GetParentGeometry();
+    for (int j = 0; j < TNS; ++j) {
+        bool has = slave[j].SolutionStepsDataHas(VECTOR_LAGRANGE_MULTIPLIER);
+        for (int c = 0; c < TDim; ++c) has = has && slave[j].HasDofFor(*kMultiplierComponents[c]);
+        CONTACT_CHECK(has, InputError, "condition ", this->Id(), ": slave node ", slave[j].Id(),
+                      " lacks VECTOR_LAGRANGE_MULTIPLIER (historical variable and _X/_Y", TDim == 3 ? "/_Z" : "",
+                      " DoFs)\n  fix: use mortar_type \"ALMContactFrictional\" so the solver adds them");
+    }
+    CheckFrictionalVariables<TDim, TNS>(slave, this->Id());
+    return 0;
+}
+
+ALMF_TEMPLATE
+void ALMF_CLASS::Save(Serializer& rSerializer) const {
+    BaseType::Save(rSerializer);
+    mPreviousMortarOperators.Save(rSerializer);
+}
+
+ALMF_TEMPLATE
+void ALMF_CLASS::Load(Serializer& rSerializer) {
+    BaseType::Load(rSerializer);
+    mPreviousMortarOperators.Load(rSerializer);
+}
+
+ALMF_TEMPLATE
+typename ALMF_CLASS::BaseType::MultiplierVector ALMF_CLASS::MultiplierValues() const {
+    const Geometry& slave = this->GetParentGeometry();
+    typename BaseType::MultiplierVector lambda;
+    for (int j = 0; j < TNS; ++j)
+        lambda.template segment<TDim>(j * TDim) =
+            slave[j].FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER).template head<TDim>();
+    return lambda;
+}
+
+ALMF_TEMPLATE
+void ALMF_CLASS::InitializeResidual(const MortarOperators<double, TNS, TNM>& operators,
+                                    const ProcessInfo& rCurrentProcessInfo) {
+    this->Set(MODIFIED, !IsObjective(operators, mPreviousMortarOperators, rCurrentProcessInfo));
+}
+
+ALMF_TEMPLATE
+template <class T>
+void ALMF_CLASS::AddFrictionalResidual(const State<T>& state, const ProcessInfo& rCurrentProcessInfo,
+                                       LocalVector<T>& rhs) const {
+    const Geometry& slave = this->GetParentGeometry();
+    CONTACT_CHECK(rCurrentProcessInfo.Has(SCALE_FACTOR), InputError, "ALM frictional contact condition ", this->Id(),
+                  ": SCALE_FACTOR is not set in the ProcessInfo\n  fix: run the ALM initialisation (ALMFastInit)",
+                  " or set ProcessInfo[SCALE_FACTOR]");
+    const double k = rCurrentProcessInfo.GetValue(SCALE_FACTOR);
+    // Every node divides by ε (inactive and slip rows); κ is needed by the inactive and the stick rows.
+    const auto p = ReadFrictionalParameters<TDim, TNS>(
+        slave, rCurrentProcessInfo, this->Id(), "ALM", [](bool) { return true; },
+        [](bool active, bool slip) { return !active || !slip; });
+    const auto slip = MakeSlipData<TDim, TNS, TNM>(*this, mPreviousMortarOperators, p);
+    AddALMFrictionalResidual<T, TDim, TNS, TNM>(state, k, p, slip, rhs);
+}
+
+ALMF_TEMPLATE
+void ALMF_CLASS::AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
+                             LocalVector<double>& rhs) const {
+    AddFrictionalResidual<double>(state, rCurrentProcessInfo, rhs);
+}
+
+ALMF_TEMPLATE
+void ALMF_CLASS::AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
+                             LocalVector<ADScalar>& rhs) const {
+    AddFrictionalResidual<ADScalar>(state, rCurrentProcessInfo, rhs);
+}
+
+template <int TNS, bool TNV>
+Condition::Pointer AugmentedLagrangianMethodFrictionalMortarContactAxisymCondition<TNS, TNV>::Create(
+    IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties, Geometry::Pointer master) const {
+    return std::make_shared<AugmentedLagrangianMethodFrictionalMortarContactAxisymCondition<TNS, TNV>>(
+        new_id, std::move(slave), std::move(properties), std::move(master));
+}
+
+#undef ALMF_TEMPLATE
+#undef ALMF_CLASS
+
+template class AugmentedLagrangianMethodFrictionalMortarContactCondition<2, 2, false, 2>;
+template class AugmentedLagrangianMethodFrictionalMortarContactCondition<2, 2, true, 2>;
+template class AugmentedLagrangianMethodFrictionalMortarContactCondition<3, 3, false, 3>;
+template class AugmentedLagrangianMethodFrictionalMortarContactCondition<3, 3, true, 3>;
+template class AugmentedLagrangianMethodFrictionalMortarContactCondition<3, 4, false, 4>;
+template class AugmentedLagrangianMethodFrictionalMortarContactCondition<3, 4, true, 4>;
+template class AugmentedLagrangianMethodFrictionalMortarContactCondition<3, 3, false, 4>;
+template class AugmentedLagrangianMethodFrictionalMortarContactCondition<3, 3, true, 4>;
+template class AugmentedLagrangianMethodFrictionalMortarContactCondition<3, 4, false, 3>;
+template class AugmentedLagrangianMethodFrictionalMortarContactCondition<3, 4, true, 3>;
+template class AugmentedLagrangianMethodFrictionalMortarContactAxisymCondition<2, false>;
+template class AugmentedLagrangianMethodFrictionalMortarContactAxisymCondition<2, true>;
+
+}  // namespace contact_app

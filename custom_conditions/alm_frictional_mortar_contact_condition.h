@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include "custom_conditions/frictional_mortar_contact_common.h"
+#include "custom_conditions/mortar_contact_condition.h"
+
+namespace contact_app {
+
+/// ALM frictional (Coulomb) mortar contact, vector multiplier λ_j = VECTOR_LAGRANGE_MULTIPLIER (kratos_residuals.md
+/// §3.3.1). With g̃_j = −n_j·(D x1 − M x2)_j, P_j = I − n_j n_jᵀ, λ̄_n = k n·λ + ε g̃: inactive RHS_λ = −k²/ε λ_n n
+/// − k²/(κε) PᵀPλ; slip S_j[δ(kλ + εg̃n)], RHS_λ = k g̃ n − k/ε Pᵀ(kPλ + μ λ̄_n t); stick S_j[δ(kλ + εg̃n + κε s)],
+/// RHS_λ = k g̃ n + k Pᵀ s, s the objective or non-objective slip (switch on OPERATOR_THRESHOLD, recorded in
+/// MODIFIED). k = SCALE_FACTOR, κ = TANGENT_FACTOR, ε = INITIAL_PENALTY, δ = DYNAMIC_FACTOR, μ = FRICTION_COEFFICIENT,
+/// t = TANGENT_XI (held constant). LHS = −∂RHS/∂q by AD. Registers ALM[NV]FrictionalMortarContactCondition{2D2N,
+/// 3D3N,3D4N,3D3N4N,3D4N3N}; local system [master u, slave u, slave λ] of size d(2n_s + n_m). The non-objective
+/// slip uses the true step increment x − (X0 + d(1)) (reference bug B1 fixed); buffer size 2 suffices.
+template <int TDim, int TNumNodes, bool TNormalVariation, int TNumNodesMaster = TNumNodes>
+class AugmentedLagrangianMethodFrictionalMortarContactCondition
+    : public MortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONAL, TNormalVariation, TNumNodesMaster> {
+public:
+    using BaseType =
+        MortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONAL, TNormalVariation, TNumNodesMaster>;
+    using typename BaseType::ADScalar;
+    template <class T>
+    using State = typename BaseType::template State<T>;
+    template <class T>
+    using LocalVector = typename BaseType::template LocalVector<T>;
+    using BaseType::BaseType;
+    using BaseType::Create;
+
+    Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
+                              Geometry::Pointer master) const override;
+    /// Base reset plus the previous operators (zero, not initialized).
+    void Initialize(const ProcessInfo& rCurrentProcessInfo) override;
+    /// Computes the start-of-step operators once per step (X0 + d(1)).
+    void InitializeSolutionStep(const ProcessInfo& rCurrentProcessInfo) override;
+    /// Lets the next step recompute the previous operators.
+    void FinalizeSolutionStep(const ProcessInfo& rCurrentProcessInfo) override;
+    /// @param[out] rResult [master DISPLACEMENT_*, slave DISPLACEMENT_*, slave VECTOR_LAGRANGE_MULTIPLIER_*]
+    void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
+    void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
+    /// Σ_i s_i 3^i, s_i = 0 inactive, 1 active-slip, 2 active-stick.
+    int GetActiveInactiveValue() const override;
+    /// Adds g̃ to WEIGHTED_GAP and the weighted slip (objective iff not MODIFIED) to WEIGHTED_SLIP (historical).
+    void AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) override;
+    /// Base checks plus VECTOR_LAGRANGE_MULTIPLIER (historical and DoFs), WEIGHTED_SLIP (historical), buffer ≥ 2.
+    int Check(const ProcessInfo& rCurrentProcessInfo) const override;
+    /// Paired-condition state plus the previous operators and their flags (restart with a consistent slip).
+    void Save(Serializer& rSerializer) const override;
+    void Load(Serializer& rSerializer) override;
+
+protected:
+    typename BaseType::MultiplierVector MultiplierValues() const override;
+    void InitializeResidual(const MortarOperators<double, TNumNodes, TNumNodesMaster>& operators,
+                            const ProcessInfo& rCurrentProcessInfo) override;
+    void AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
+                     LocalVector<double>& rhs) const override;
+    void AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
+                     LocalVector<ADScalar>& rhs) const override;
+
+private:
+    template <class T>
+    void AddFrictionalResidual(const State<T>& state, const ProcessInfo& rCurrentProcessInfo,
+                               LocalVector<T>& rhs) const;
+
+    frictional_detail::PreviousMortarOperators<TNumNodes, TNumNodesMaster> mPreviousMortarOperators;
+};
+
+/// Axisymmetric variant (2D2N only): every Gauss weight (current and start-of-step operators, explicit gap and
+/// slip) times 2π r / THICKNESS. Registers ALM[NV]FrictionalAxisymMortarContactCondition2D2N.
+template <int TNumNodes, bool TNormalVariation>
+class AugmentedLagrangianMethodFrictionalMortarContactAxisymCondition
+    : public AugmentedLagrangianMethodFrictionalMortarContactCondition<2, TNumNodes, TNormalVariation> {
+public:
+    using BaseType = AugmentedLagrangianMethodFrictionalMortarContactCondition<2, TNumNodes, TNormalVariation>;
+    using BaseType::BaseType;
+    using BaseType::Create;
+
+    Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
+                              Geometry::Pointer master) const override;
+    bool IsAxisymmetric() const override { return true; }
+};
+
+}  // namespace contact_app

@@ -1,0 +1,371 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_conditions/mpc_mortar_contact_condition.h"
+
+#include <limits>
+#include <sstream>
+
+#include <Eigen/LU>
+
+#include "contact_app/application.h"
+#include "contact_app/kernel/exceptions.h"
+#include "contact_app/kernel/master_slave_constraint.h"
+#include "contact_app/kernel/serializer.h"
+#include "custom_conditions/mortar_pair_settings.h"
+#include "custom_utilities/mortar_explicit_contribution.h"
+#include "custom_utilities/mortar_geometry_adapters.h"
+
+namespace contact_app {
+namespace {
+
+const Variable<double>* const kDisplacementComponents[] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
+
+/// Kratos IsActive(): a node whose ACTIVE flag was never set counts as active.
+bool IsActiveNode(const Node& node) { return node.IsNotDefined(ACTIVE) || node.Is(ACTIVE); }
+
+/// Historical DISPLACEMENT at buffer 1 (the previous converged step), 0 with a one-step buffer.
+template <int TDim>
+Eigen::Matrix<double, TDim, 1> PreviousDisplacement(const Node& node) {
+    if (node.GetBufferSize() < 2) return Eigen::Matrix<double, TDim, 1>::Zero();
+    return node.FastGetSolutionStepValue(DISPLACEMENT, 1).head<TDim>();
+}
+
+}  // namespace
+
+#define MPC_TEMPLATE template <int TDim, int TNS, int TNM>
+#define MPC_CLASS MPCMortarContactCondition<TDim, TNS, TNM>
+
+MPC_TEMPLATE
+Condition::Pointer MPC_CLASS::Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
+                                     Geometry::Pointer master) const {
+    return std::make_shared<MPC_CLASS>(new_id, std::move(slave), std::move(properties), std::move(master));
+}
+
+MPC_TEMPLATE
+typename MPC_CLASS::Operators MPC_CLASS::CurrentOperators(const ProcessInfo& rCurrentProcessInfo, bool& dual) const {
+    const Geometry& slave = GetParentGeometry();
+    const MortarIntegrator<TDim, TNS, TNM, double> integrator(
+        pair_settings::IntegrationSettingsFrom(pGetProperties()),
+        pair_settings::SegmentationSettingsFrom(rCurrentProcessInfo, pGetProperties()));
+    return ComputePreviousMortarOperators<TDim, TNS, TNM>(
+        integrator, CurrentCoordinates<TDim, TNS>(slave), ToSpatialVector<TDim>(GetValue(NORMAL)),
+        CurrentCoordinates<TDim, TNM>(GetPairedGeometry()), NodalNormals<TDim, TNS>(slave), dual);
+}
+
+MPC_TEMPLATE
+void MPC_CLASS::ComputePreviousOperators(const ProcessInfo& rCurrentProcessInfo) {
+    bool dual = false;
+    mPreviousMortarOperators = CurrentOperators(rCurrentProcessInfo, dual);
+    mPreviousMortarOperatorsInitialized = true;
+}
+
+MPC_TEMPLATE
+void MPC_CLASS::Initialize(const ProcessInfo& rCurrentProcessInfo) {
+    PairedCondition::Initialize(rCurrentProcessInfo);
+    mPreviousMortarOperators.Initialize();
+    mPreviousMortarOperatorsInitialized = false;
+    const ProcessInfo empty;  // as the reference: the first update ignores the ProcessInfo settings
+    if (Is(SLIP)) ComputePreviousOperators(empty);
+    UpdateConstraint(empty);
+}
+
+MPC_TEMPLATE
+void MPC_CLASS::InitializeSolutionStep(const ProcessInfo& rCurrentProcessInfo) {
+    PairedCondition::InitializeSolutionStep(rCurrentProcessInfo);
+    if (Is(BLOCKED)) return;
+    if (Is(SLIP)) ComputePreviousOperators(rCurrentProcessInfo);
+    UpdateConstraint(rCurrentProcessInfo);
+}
+
+MPC_TEMPLATE
+void MPC_CLASS::InitializeNonLinearIteration(const ProcessInfo& rCurrentProcessInfo) {
+    PairedCondition::InitializeNonLinearIteration(rCurrentProcessInfo);
+    if (Is(INTERACTION)) UpdateConstraint(rCurrentProcessInfo);
+}
+
+MPC_TEMPLATE
+void MPC_CLASS::FinalizeSolutionStep(const ProcessInfo& rCurrentProcessInfo) {
+    PairedCondition::FinalizeSolutionStep(rCurrentProcessInfo);
+    if (Is(SLIP)) ComputePreviousOperators(rCurrentProcessInfo);
+}
+
+MPC_TEMPLATE
+Eigen::Matrix<double, TNS, TNM> MPC_CLASS::ComputeQ(const Operators& operators, bool dual) {
+    Eigen::Matrix<double, TNS, TNM> Q = Eigen::Matrix<double, TNS, TNM>::Zero();
+    if (dual) {  // D is diagonal with dual multipliers
+        for (int i = 0; i < TNS; ++i)
+            if (std::abs(operators.D(i, i)) > std::numeric_limits<double>::min())
+                Q.row(i) = operators.M.row(i) / operators.D(i, i);
+    } else {
+        const Eigen::FullPivLU<Eigen::Matrix<double, TNS, TNS>> lu(operators.D);
+        if (!lu.isInvertible()) return Q;  // isolated pair (zero operators): no constraint
+        Q = lu.solve(operators.M);
+    }
+    for (int i = 0; i < TNS; ++i)
+        if (Q.row(i).minCoeff() < -NegativeEntryTolerance) Q.row(i).setZero();
+    return Q;
+}
+
+MPC_TEMPLATE
+MPCConstraintRelation MPC_CLASS::ComputeConstraintRelation(const ProcessInfo& rCurrentProcessInfo) const {
+    bool dual = false;
+    const Operators operators = CurrentOperators(rCurrentProcessInfo, dual);
+    const Eigen::Matrix<double, TNS, TNM> Q = ComputeQ(operators, dual);
+    const Geometry& slave = GetParentGeometry();
+    const Geometry& master = GetPairedGeometry();
+    const auto normals = NodalNormals<TDim, TNS>(slave);
+    Eigen::Matrix<double, TNM, TDim> u2_previous;  // B7 done right: n_m master rows
+    for (int j = 0; j < TNM; ++j) u2_previous.row(j) = PreviousDisplacement<TDim>(master[j]).transpose();
+
+    MPCConstraintRelation result;
+    result.relation.setZero(TDim * TNS, TDim * TNM);
+    result.constant.setZero(TDim * TNS);
+    for (int i = 0; i < TNS; ++i) {
+        const Node& node = slave[i];
+        const bool active = IsActiveNode(node);
+        const double paux = node.Has(NODAL_PAUX) ? node.GetValue(NODAL_PAUX) : 0.0;
+        CONTACT_CHECK(!active || paux > 0.0, InputError, "MPCMortarContactCondition ", Id(), ": active slave node ",
+                      node.Id(), " has NODAL_PAUX ", paux,
+                      "\n  expected: the (positive) number of slave conditions containing the node",
+                      "\n  fix: compute the nodal weights (the MPC contact strategy does) before updating the constraint");
+        const double weight = paux > 0.0 ? 1.0 / paux : 0.0;
+        const Eigen::Matrix<double, TDim, 1> n = normals.row(i).transpose();
+        if (active) {
+            // SLIP condition: slip nodes normal-only, stick nodes full; RIGID (tying): full; else frictionless.
+            // [BUG?] B6: a normal-only row u_s = n nᵀ(Q u_m) + c constrains the total slave displacement, so its
+            // tangential part is forced to zero as well; u_s = T u_m + c cannot express "normal part only", the
+            // documented relation is kept.
+            const bool normal_only = Is(SLIP) ? node.Is(SLIP) : !Is(RIGID);
+            for (int j = 0; j < TNM; ++j) {
+                if (normal_only) {
+                    for (int a = 0; a < TDim; ++a)
+                        for (int b = 0; b < TDim; ++b) {
+                            const double value = n[a] * n[b] * Q(i, j);
+                            if (std::abs(value) > 1.0e-12) result.relation(i * TDim + a, j * TDim + b) = weight * value;
+                        }
+                } else if (std::abs(Q(i, j)) > 1.0e-12) {
+                    for (int a = 0; a < TDim; ++a) result.relation(i * TDim + a, j * TDim + a) = weight * Q(i, j);
+                }
+            }
+        }
+        // Gap carried by the constant: closing it needs n·(Δu1 − Q Δu2) = g̃/A from the previous displacements.
+        const double area = node.Has(NODAL_AREA) && node.GetValue(NODAL_AREA) > 0.0 ? node.GetValue(NODAL_AREA) : 1.0;
+        const double gap = node.FastGetSolutionStepValue(WEIGHTED_GAP);
+        const Eigen::Matrix<double, TDim, 1> relative =
+            PreviousDisplacement<TDim>(node) - (Q.row(i) * u2_previous).transpose();
+        const double normal_constant = weight * (gap / area + n.dot(relative));
+        for (int a = 0; a < TDim; ++a) result.constant[i * TDim + a] = normal_constant * n[a];
+    }
+    return result;
+}
+
+MPC_TEMPLATE
+void MPC_CLASS::UpdateConstraint(const ProcessInfo& rCurrentProcessInfo) {
+    if (!Has(CONSTRAINT_POINTER)) return;
+    const std::shared_ptr<MasterSlaveConstraint> constraint = GetValue(CONSTRAINT_POINTER);
+    if (!constraint) return;
+    const MPCConstraintRelation full = ComputeConstraintRelation(rCurrentProcessInfo);
+    const Geometry& slave = GetParentGeometry();
+    const Geometry& master = GetPairedGeometry();
+    std::vector<Eigen::Index> rows, cols;
+    DofsVectorType slave_dofs, master_dofs;
+    for (Eigen::Index r = 0; r < full.relation.rows(); ++r)
+        if (full.relation.row(r).cwiseAbs().sum() > PruneTolerance) {
+            rows.push_back(r);
+            slave_dofs.push_back(&slave[r / TDim].GetDof(*kDisplacementComponents[r % TDim]));
+        }
+    for (Eigen::Index c = 0; c < full.relation.cols(); ++c)
+        if (full.relation.col(c).cwiseAbs().sum() > PruneTolerance) {
+            cols.push_back(c);
+            master_dofs.push_back(&master[c / TDim].GetDof(*kDisplacementComponents[c % TDim]));
+        }
+    Matrix relation(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(cols.size()));
+    Vector constant(static_cast<Eigen::Index>(rows.size()));
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+        constant[r] = full.constant[rows[r]];
+        for (std::size_t c = 0; c < cols.size(); ++c) relation(r, c) = full.relation(rows[r], cols[c]);
+    }
+    constraint->SetDofList(slave_dofs, master_dofs, rCurrentProcessInfo);
+    constraint->SetLocalSystem(relation, constant, rCurrentProcessInfo);
+}
+
+MPC_TEMPLATE
+void MPC_CLASS::CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
+                                     const ProcessInfo& rCurrentProcessInfo) {
+    CalculateLeftHandSide(rLeftHandSideMatrix, rCurrentProcessInfo);
+    CalculateRightHandSide(rRightHandSideVector, rCurrentProcessInfo);
+}
+
+MPC_TEMPLATE
+void MPC_CLASS::CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo&) {
+    rLeftHandSideMatrix.setZero(MatrixSize, MatrixSize);
+}
+
+MPC_TEMPLATE
+void MPC_CLASS::CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo&) {
+    rRightHandSideVector.setZero(MatrixSize);
+    if (!Is(SLIP)) return;
+    const double eps = std::numeric_limits<double>::epsilon();
+    const Geometry& slave = GetParentGeometry();
+    for (int i = 0; i < TNS; ++i) {
+        const Node& node = slave[i];
+        if (!node.Is(SLIP)) continue;
+        const Eigen::Matrix<double, TDim, 1> force = node.FastGetSolutionStepValue(REACTION).head<TDim>();
+        const Eigen::Matrix<double, TDim, 1> n = node.FastGetSolutionStepValue(NORMAL).head<TDim>();
+        const double normal_force = force.dot(n);
+        const Eigen::Matrix<double, TDim, 1> tangential = force - normal_force * n;
+        Eigen::Matrix<double, TDim, 1> direction = Eigen::Matrix<double, TDim, 1>::Zero();
+        if (tangential.norm() > eps) {
+            direction = tangential.normalized();
+        } else {
+            const Array3 slip = node.SolutionStepsDataHas(WEIGHTED_SLIP) ? node.FastGetSolutionStepValue(WEIGHTED_SLIP)
+                                                                        : node.GetValue(WEIGHTED_SLIP);
+            if (slip.head<TDim>().norm() > eps) direction = slip.head<TDim>().normalized();
+        }
+        // Explicit Coulomb force −μ (F·n) e on the slave rows (the reference marks its sign "TODO: Check sign").
+        const Eigen::Matrix<double, TDim, 1> f = -node.GetValue(FRICTION_COEFFICIENT) * normal_force * direction;
+        for (int a = 0; a < TDim; ++a) rRightHandSideVector[TDim * TNM + i * TDim + a] += f[a];
+    }
+}
+
+MPC_TEMPLATE
+void MPC_CLASS::CalculateMassMatrix(Matrix& rMassMatrix, const ProcessInfo&) { rMassMatrix.resize(0, 0); }
+
+MPC_TEMPLATE
+void MPC_CLASS::CalculateDampingMatrix(Matrix& rDampingMatrix, const ProcessInfo&) { rDampingMatrix.resize(0, 0); }
+
+MPC_TEMPLATE
+void MPC_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&) const {
+    const Geometry& slave = GetParentGeometry();
+    const Geometry& master = GetPairedGeometry();
+    rElementalDofList.clear();
+    rElementalDofList.reserve(MatrixSize);
+    for (int l = 0; l < TNM; ++l)
+        for (int c = 0; c < TDim; ++c) rElementalDofList.push_back(&master[l].GetDof(*kDisplacementComponents[c]));
+    for (int j = 0; j < TNS; ++j)
+        for (int c = 0; c < TDim; ++c) rElementalDofList.push_back(&slave[j].GetDof(*kDisplacementComponents[c]));
+}
+
+MPC_TEMPLATE
+void MPC_CLASS::EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const {
+    DofsVectorType dofs;
+    GetDofList(dofs, rCurrentProcessInfo);
+    rResult.resize(dofs.size());
+    for (std::size_t i = 0; i < dofs.size(); ++i) rResult[i] = dofs[i]->EquationId();
+}
+
+MPC_TEMPLATE
+void MPC_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) {
+    Geometry& slave = *pGetParentGeometry();
+    const Geometry& master = GetPairedGeometry();
+    const MortarIntegrator<TDim, TNS, TNM, double> integrator(
+        pair_settings::IntegrationSettingsFrom(pGetProperties()),
+        pair_settings::SegmentationSettingsFrom(rCurrentProcessInfo, pGetProperties()));
+    ExplicitContributionOptions options;
+    options.compute_nodal_area = true;  // as the penalty conditions: NODAL_AREA normalises the constraint gap
+    const auto x1 = CurrentCoordinates<TDim, TNS>(slave);
+    const auto x2 = CurrentCoordinates<TDim, TNM>(master);
+    const SpatialVector<double, TDim> center = ToSpatialVector<TDim>(GetValue(NORMAL));
+    const auto normals = NodalNormals<TDim, TNS>(slave);
+    const bool slip = Is(SLIP);
+    ExplicitMortarContribution<double, TDim, TNS> result;
+    if (slip) {
+        const double delta_time =
+            rCurrentProcessInfo.Has(DELTA_TIME) && rCurrentProcessInfo.GetValue(DELTA_TIME) > 0.0
+                ? rCurrentProcessInfo.GetValue(DELTA_TIME)
+                : 1.0;
+        result = ComputeExplicitFrictionalMortarContribution<TDim, TNS, TNM, double, double>(
+            integrator, x1, center, x2, normals, mPreviousMortarOperators, CoordinatesAtStep<TDim, TNS>(slave, 1),
+            CoordinatesAtStep<TDim, TNM>(master, 1), delta_time, !Is(MODIFIED), options);
+    } else {
+        result = ComputeExplicitMortarContribution<TDim, TNS, TNM, double, double>(integrator, x1, center, x2,
+                                                                                   normals, options);
+    }
+    if (result.isolated) return Set(ISOLATED, true);
+    for (int j = 0; j < TNS; ++j) {
+        slave[j].FastGetSolutionStepValue(WEIGHTED_GAP) += result.weighted_gap[j];
+        if (result.dual) slave[j].SetValue(NODAL_AREA, slave[j].GetValue(NODAL_AREA) + result.nodal_area[j]);
+        if (slip) slave[j].FastGetSolutionStepValue(WEIGHTED_SLIP).head<TDim>() += result.weighted_slip.row(j).transpose();
+    }
+}
+
+MPC_TEMPLATE
+void MPC_CLASS::CalculateOnIntegrationPoints(const Variable<double>&, std::vector<double>& rOutput,
+                                             const ProcessInfo&) {
+    const Geometry& slave = GetParentGeometry();
+    rOutput.assign(slave.IntegrationPoints(slave.DefaultIntegrationOrder()).size(), 0.0);
+}
+
+MPC_TEMPLATE
+void MPC_CLASS::CalculateOnIntegrationPoints(const Variable<Array3>&, std::vector<Array3>& rOutput,
+                                             const ProcessInfo&) {
+    const Geometry& slave = GetParentGeometry();
+    rOutput.assign(slave.IntegrationPoints(slave.DefaultIntegrationOrder()).size(), Array3::Zero());
+}
+
+MPC_TEMPLATE
+void MPC_CLASS::CalculateOnIntegrationPoints(const Variable<Vector>&, std::vector<Vector>& rOutput,
+                                             const ProcessInfo&) {
+    const Geometry& slave = GetParentGeometry();
+    rOutput.assign(slave.IntegrationPoints(slave.DefaultIntegrationOrder()).size(), Vector::Zero(TDim));
+}
+
+MPC_TEMPLATE
+int MPC_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
+    PairedCondition::Check(rCurrentProcessInfo);
+    const Geometry& slave = GetParentGeometry();
+    const Geometry& master = GetPairedGeometry();
+    CONTACT_CHECK(static_cast<int>(slave.size()) == TNS && static_cast<int>(master.size()) == TNM, InputError,
+                  "MPCMortarContactCondition ", Id(), " pairs a ", slave.size(), "-node slave with a ", master.size(),
+                  "-node master\n  expected: ", TNS, " and ", TNM,
+                  " nodes\n  fix: use the condition name whose suffix matches the two faces");
+    auto check_node = [&](const Node& node, const char* side, bool is_slave) {
+        std::vector<const VariableData*> variables = {&DISPLACEMENT};
+        if (is_slave) variables.insert(variables.end(), {&NORMAL, &WEIGHTED_GAP});
+        for (const VariableData* variable : variables)
+            CONTACT_CHECK(node.SolutionStepsDataHas(*variable), InputError, "MPCMortarContactCondition ", Id(), ": ",
+                          side, " node ", node.Id(), " does not store ", variable->Name(), " as a historical variable",
+                          "\n  fix: add it to the model part's solution-step variables (the MPC contact solver does)");
+        for (int c = 0; c < TDim; ++c)
+            CONTACT_CHECK(node.HasDofFor(*kDisplacementComponents[c]), InputError, "MPCMortarContactCondition ", Id(),
+                          ": ", side, " node ", node.Id(), " has no ", kDisplacementComponents[c]->Name(), " DoF",
+                          "\n  fix: add the DISPLACEMENT DoFs to the ", side, " nodes");
+    };
+    for (std::size_t l = 0; l < master.size(); ++l) check_node(master[l], "master", false);
+    for (std::size_t j = 0; j < slave.size(); ++j) check_node(slave[j], "slave", true);
+    return 0;
+}
+
+MPC_TEMPLATE
+void MPC_CLASS::Save(Serializer& rSerializer) const {
+    PairedCondition::Save(rSerializer);
+    rSerializer.Save("PreviousMortarOperatorsD", mPreviousMortarOperators.D);
+    rSerializer.Save("PreviousMortarOperatorsM", mPreviousMortarOperators.M);
+    rSerializer.Save("PreviousMortarOperatorsInitialized", mPreviousMortarOperatorsInitialized);
+}
+
+MPC_TEMPLATE
+void MPC_CLASS::Load(Serializer& rSerializer) {
+    PairedCondition::Load(rSerializer);
+    rSerializer.Load("PreviousMortarOperatorsD", mPreviousMortarOperators.D);
+    rSerializer.Load("PreviousMortarOperatorsM", mPreviousMortarOperators.M);
+    rSerializer.Load("PreviousMortarOperatorsInitialized", mPreviousMortarOperatorsInitialized);
+}
+
+MPC_TEMPLATE
+std::string MPC_CLASS::Info() const {
+    std::ostringstream out;
+    out << "MPCMortarContactCondition #" << Id() << " (slave " << GetParentGeometry().Name() << ", master "
+        << (HasPairedGeometry() ? GetPairedGeometry().Name() : std::string("none")) << ")";
+    return out.str();
+}
+
+#undef MPC_TEMPLATE
+#undef MPC_CLASS
+
+template class MPCMortarContactCondition<2, 2, 2>;
+template class MPCMortarContactCondition<3, 3, 3>;
+template class MPCMortarContactCondition<3, 4, 4>;
+template class MPCMortarContactCondition<3, 3, 4>;
+template class MPCMortarContactCondition<3, 4, 3>;
+
+}  // namespace contact_app

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include "custom_conditions/paired_condition.h"
+#include "custom_utilities/mortar_types.h"
+
+namespace contact_app {
+
+/// Full (unpruned) constraint of one pair: rows (slave node i, component a) = i·d + a, columns (master node j,
+/// component b) = j·d + b.
+struct MPCConstraintRelation {
+    Matrix relation;  ///< d n_s × d n_m
+    Vector constant;  ///< d n_s
+};
+
+/// Mortar contact imposed through a multipoint constraint (Kratos MPCMortarContactCondition,
+/// kratos_residuals.md §5, condition_classes.md). The condition contributes a zero LHS and a RHS that is zero
+/// except for the explicit Coulomb slip force (SLIP condition, SLIP slave nodes); the contact itself is the
+/// ContactMasterSlaveConstraint stored in its CONSTRAINT_POINTER value, u_s = T u_m + c on the DISPLACEMENT DoFs,
+/// which the condition rebuilds from Q = D⁻¹M (current configuration, dual basis when Ae succeeds) in
+/// Initialize, InitializeSolutionStep (unless BLOCKED) and InitializeNonLinearIteration (only if the condition
+/// Is(INTERACTION)): frictionless (normal-only rows n nᵀ Q), frictional (SLIP condition: slip nodes normal-only,
+/// stick nodes full Q) or tying (RIGID condition: full Q), each row weighted by 1/NODAL_PAUX, then the rows and
+/// columns with an absolute sum ≤ 1e−4 are pruned and the constraint DoF lists reset to the surviving ones.
+/// Registers MPCMortarContactCondition{2D2N,3D3N,3D4N,3D3N4N,3D4N3N}; local system [master u, slave u].
+template <int TDim, int TNumNodes, int TNumNodesMaster = TNumNodes>
+class MPCMortarContactCondition : public PairedCondition {
+public:
+    static constexpr int MatrixSize = TDim * (TNumNodes + TNumNodesMaster);
+    /// A row of Q with an entry below −this is zeroed (a negative weight would pull the slave away).
+    static constexpr double NegativeEntryTolerance = 1.0e-8;
+    /// Rows / columns of T whose absolute sum is at most this are pruned from the constraint.
+    static constexpr double PruneTolerance = 1.0e-4;
+    using Operators = MortarOperators<double, TNumNodes, TNumNodesMaster>;
+
+    using PairedCondition::PairedCondition;
+    using PairedCondition::Create;
+    Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
+                              Geometry::Pointer master) const override;
+
+    /// Previous operators if Is(SLIP), then a first constraint update with an empty ProcessInfo.
+    void Initialize(const ProcessInfo& rCurrentProcessInfo) override;
+    /// Unless Is(BLOCKED): previous operators if Is(SLIP), then the constraint update.
+    void InitializeSolutionStep(const ProcessInfo& rCurrentProcessInfo) override;
+    /// The constraint update, only if the condition Is(INTERACTION).
+    void InitializeNonLinearIteration(const ProcessInfo& rCurrentProcessInfo) override;
+    /// Previous operators recomputed if Is(SLIP) (start of the next step).
+    void FinalizeSolutionStep(const ProcessInfo& rCurrentProcessInfo) override;
+
+    /// Zero LHS (MatrixSize²); RHS zero except the slip force of CalculateRightHandSide.
+    void CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
+                              const ProcessInfo& rCurrentProcessInfo) override;
+    void CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) override;
+    /// If Is(SLIP): every SLIP slave node i gets f_i = −μ_i (F_i·n_i) e_i on its rows, F = historical REACTION,
+    /// n = NORMAL, μ = FRICTION_COEFFICIENT (non-historical), e = F_τ/|F_τ| (else WEIGHTED_SLIP/|·|, else 0).
+    void CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo& rCurrentProcessInfo) override;
+    void CalculateMassMatrix(Matrix& rMassMatrix, const ProcessInfo& rCurrentProcessInfo) override;
+    void CalculateDampingMatrix(Matrix& rDampingMatrix, const ProcessInfo& rCurrentProcessInfo) override;
+    /// [master DISPLACEMENT_*, slave DISPLACEMENT_*]. @throws InputError if a DoF is missing
+    void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
+    void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
+    /// Adds the pair's weighted gap to the historical WEIGHTED_GAP, D_jj to NODAL_AREA (dual only) and, if
+    /// Is(SLIP), the weighted slip (previous operators) to the historical WEIGHTED_SLIP (or flags ISOLATED).
+    void AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) override;
+    void CalculateOnIntegrationPoints(const Variable<double>& rVariable, std::vector<double>& rOutput,
+                                      const ProcessInfo& rCurrentProcessInfo) override;
+    void CalculateOnIntegrationPoints(const Variable<Array3>& rVariable, std::vector<Array3>& rOutput,
+                                      const ProcessInfo& rCurrentProcessInfo) override;
+    void CalculateOnIntegrationPoints(const Variable<Vector>& rVariable, std::vector<Vector>& rOutput,
+                                      const ProcessInfo& rCurrentProcessInfo) override;
+    /// @throws InputError: unpaired, wrong node counts, a node without DISPLACEMENT (historical) or its DoFs, a
+    ///         slave node without NORMAL / WEIGHTED_GAP (historical)
+    int Check(const ProcessInfo& rCurrentProcessInfo) const override;
+    std::string Info() const override;
+    /// Base state plus the previous mortar operators (a restart resumes with a consistent slip).
+    void Save(Serializer& rSerializer) const override;
+    void Load(Serializer& rSerializer) override;
+
+    /// @brief T and c of the pair before pruning (kratos_residuals.md §5.2), from the current coordinates.
+    /// @throws InputError if an active slave node has no positive NODAL_PAUX
+    MPCConstraintRelation ComputeConstraintRelation(const ProcessInfo& rCurrentProcessInfo) const;
+    /// @brief Q = D⁻¹M with the negative-row filter (exposed for the tests).
+    static Eigen::Matrix<double, TNumNodes, TNumNodesMaster> ComputeQ(const Operators& operators, bool dual);
+    /// Rebuilds the constraint of CONSTRAINT_POINTER (no-op without one): ComputeConstraintRelation, pruning,
+    /// SetDofList and SetLocalSystem.
+    void UpdateConstraint(const ProcessInfo& rCurrentProcessInfo);
+
+    const Operators& GetPreviousMortarOperators() const { return mPreviousMortarOperators; }
+    bool PreviousMortarOperatorsInitialized() const { return mPreviousMortarOperatorsInitialized; }
+
+private:
+    Operators CurrentOperators(const ProcessInfo& rCurrentProcessInfo, bool& dual) const;
+    void ComputePreviousOperators(const ProcessInfo& rCurrentProcessInfo);
+
+    Operators mPreviousMortarOperators;
+    bool mPreviousMortarOperatorsInitialized = false;
+};
+
+}  // namespace contact_app

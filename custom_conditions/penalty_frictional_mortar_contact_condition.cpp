@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_conditions/penalty_frictional_mortar_contact_condition.h"
+
+namespace contact_app {
+namespace {
+
+using namespace frictional_detail;
+
+/// RHS of kratos_residuals.md §3.5 with B2 fixed, q = [u2 (d·n_m), u1 (d·n_s)]: S_j[δ_j(ε_j g̃_j n_j + τ_j)] on the
+/// active nodes, nothing on the inactive ones.
+template <class T, int TDim, int TNS, int TNM, class TState, class TVector>
+void AddPenaltyFrictionalResidual(const TState& s, const FrictionalParameters<TDim, TNS>& p,
+                                  const SlipData<TDim, TNS, TNM>& slip, TVector& rhs) {
+    using Vec = Eigen::Matrix<T, TDim, 1>;
+    for (int j = 0; j < TNS; ++j) {
+        if (!p.nodal.active[j]) continue;
+        const double eps = p.nodal.penalty[j];
+        const T gap = PairGap<T, TDim>(s, j);
+        const Vec n = s.normals.row(j).transpose();
+        Vec force = n * (eps * gap);
+        if (p.slip[j]) {  // Coulomb: |τ| = μ ε |g̃| along t (ε g̃ < 0 in contact)
+            const Vec tangent = p.tangent.row(j).transpose().template cast<T>();
+            force += tangent * (-p.mu[j] * eps * gap);
+        } else {  // stick penalty on the weighted slip of the step
+            force += TangentSlip<T, TDim, TNS, TNM>(s, slip, j) * (p.tangent_factor * eps);
+        }
+        SpreadForce<T, TDim, TNS, TNM>(s, j, Vec(force * p.nodal.dynamic_factor[j]), rhs);
+    }
+}
+
+}  // namespace
+
+#define PENF_TEMPLATE template <int TDim, int TNS, bool TNV, int TNM>
+#define PENF_CLASS PenaltyMethodFrictionalMortarContactCondition<TDim, TNS, TNV, TNM>
+
+PENF_TEMPLATE
+Condition::Pointer PENF_CLASS::Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
+                                      Geometry::Pointer master) const {
+    return std::make_shared<PENF_CLASS>(new_id, std::move(slave), std::move(properties), std::move(master));
+}
+
+PENF_TEMPLATE
+void PENF_CLASS::Initialize(const ProcessInfo& rCurrentProcessInfo) {
+    BaseType::Initialize(rCurrentProcessInfo);
+    mPreviousMortarOperators.Reset();
+}
+
+PENF_TEMPLATE
+void PENF_CLASS::InitializeSolutionStep(const ProcessInfo& rCurrentProcessInfo) {
+    BaseType::InitializeSolutionStep(rCurrentProcessInfo);
+    ComputePreviousOperatorsOnce<TDim, TNS, TNM>(*this, rCurrentProcessInfo, mPreviousMortarOperators);
+}
+
+PENF_TEMPLATE
+void PENF_CLASS::FinalizeSolutionStep(const ProcessInfo& rCurrentProcessInfo) {
+    BaseType::FinalizeSolutionStep(rCurrentProcessInfo);
+    mPreviousMortarOperators.initialized = false;
+}
+
+PENF_TEMPLATE
+void PENF_CLASS::EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const {
+    DofsVectorType dofs;
+    GetDofList(dofs, rCurrentProcessInfo);
+    EquationIdsOf(dofs, rResult);
+}
+
+PENF_TEMPLATE
+void PENF_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&) const {
+    rElementalDofList.clear();
+    rElementalDofList.reserve(BaseType::MatrixSize);
+    AppendDisplacementDofs<TDim, TNS, TNM>(this->GetParentGeometry(), this->GetPairedGeometry(), rElementalDofList);
+}
+
+PENF_TEMPLATE
+int PENF_CLASS::GetActiveInactiveValue() const {
+    return FrictionalStateValue<TNS>(this->GetParentGeometry());
+}
+
+PENF_TEMPLATE
+void PENF_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) {
+    AddFrictionalExplicitContribution<TDim, TNS, TNM>(*this, rCurrentProcessInfo, mPreviousMortarOperators);
+}
+
+PENF_TEMPLATE
+int PENF_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
+    BaseType::Check(rCurrentProcessInfo);
+    CheckFrictionalVariables<TDim, TNS>(this->GetParentGeometry(), this->Id());
+    return 0;
+}
+
+PENF_TEMPLATE
+void PENF_CLASS::Save(Serializer& rSerializer) const {
+    BaseType::Save(rSerializer);
+    mPreviousMortarOperators.Save(rSerializer);
+}
+
+PENF_TEMPLATE
+void PENF_CLASS::Load(Serializer& rSerializer) {
+    BaseType::Load(rSerializer);
+    mPreviousMortarOperators.Load(rSerializer);
+}
+
+PENF_TEMPLATE
+void PENF_CLASS::InitializeResidual(const MortarOperators<double, TNS, TNM>& operators,
+                                    const ProcessInfo& rCurrentProcessInfo) {
+    this->Set(MODIFIED, !IsObjective(operators, mPreviousMortarOperators, rCurrentProcessInfo));
+}
+
+PENF_TEMPLATE
+template <class T>
+void PENF_CLASS::AddFrictionalResidual(const State<T>& state, const ProcessInfo& rCurrentProcessInfo,
+                                       LocalVector<T>& rhs) const {
+    // ε on the active nodes (the inactive ones add nothing); κ only on the stick nodes.
+    const auto p = ReadFrictionalParameters<TDim, TNS>(
+        this->GetParentGeometry(), rCurrentProcessInfo, this->Id(), "Penalty", [](bool active) { return active; },
+        [](bool active, bool slip) { return active && !slip; });
+    const auto slip = MakeSlipData<TDim, TNS, TNM>(*this, mPreviousMortarOperators, p);
+    AddPenaltyFrictionalResidual<T, TDim, TNS, TNM>(state, p, slip, rhs);
+}
+
+PENF_TEMPLATE
+void PENF_CLASS::AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
+                             LocalVector<double>& rhs) const {
+    AddFrictionalResidual<double>(state, rCurrentProcessInfo, rhs);
+}
+
+PENF_TEMPLATE
+void PENF_CLASS::AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
+                             LocalVector<ADScalar>& rhs) const {
+    AddFrictionalResidual<ADScalar>(state, rCurrentProcessInfo, rhs);
+}
+
+template <int TNS, bool TNV>
+Condition::Pointer PenaltyMethodFrictionalMortarContactAxisymCondition<TNS, TNV>::Create(
+    IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties, Geometry::Pointer master) const {
+    return std::make_shared<PenaltyMethodFrictionalMortarContactAxisymCondition<TNS, TNV>>(
+        new_id, std::move(slave), std::move(properties), std::move(master));
+}
+
+#undef PENF_TEMPLATE
+#undef PENF_CLASS
+
+template class PenaltyMethodFrictionalMortarContactCondition<2, 2, false, 2>;
+template class PenaltyMethodFrictionalMortarContactCondition<2, 2, true, 2>;
+template class PenaltyMethodFrictionalMortarContactCondition<3, 3, false, 3>;
+template class PenaltyMethodFrictionalMortarContactCondition<3, 3, true, 3>;
+template class PenaltyMethodFrictionalMortarContactCondition<3, 4, false, 4>;
+template class PenaltyMethodFrictionalMortarContactCondition<3, 4, true, 4>;
+template class PenaltyMethodFrictionalMortarContactCondition<3, 3, false, 4>;
+template class PenaltyMethodFrictionalMortarContactCondition<3, 3, true, 4>;
+template class PenaltyMethodFrictionalMortarContactCondition<3, 4, false, 3>;
+template class PenaltyMethodFrictionalMortarContactCondition<3, 4, true, 3>;
+template class PenaltyMethodFrictionalMortarContactAxisymCondition<2, false>;
+template class PenaltyMethodFrictionalMortarContactAxisymCondition<2, true>;
+
+}  // namespace contact_app

@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include "custom_conditions/frictional_mortar_contact_common.h"
+#include "custom_conditions/mortar_contact_condition.h"
+
+namespace contact_app {
+
+/// Penalty frictional (Coulomb) mortar contact, displacement DoFs only (kratos_residuals.md §3.5). With
+/// g̃_j = −n_j·(D x1 − M x2)_j, an active node adds S_j[δ_j(ε_j g̃_j n_j + τ_j)], τ_j = −μ_j ε_j g̃_j t_j (SLIP) or
+/// κ ε_j s_j (stick), s_j the objective or non-objective slip of the step (switch on OPERATOR_THRESHOLD recorded
+/// in MODIFIED, as the ALM family); inactive nodes add nothing. ε = INITIAL_PENALTY, δ = DYNAMIC_FACTOR,
+/// μ = FRICTION_COEFFICIENT, t = TANGENT_XI (constant), κ = TANGENT_FACTOR. LHS = −∂RHS/∂q by AD. Deviations from
+/// the reference (B2): the tangential traction is spread with D, M like the normal one (the reference weights it
+/// with D − D_old, M − M_old, so it vanishes for small sliding), and the reference always uses the objective slip.
+/// Registers Penalty[NV]FrictionalMortarContactCondition{2D2N,3D3N,3D4N,3D3N4N,3D4N3N}; size d(n_s + n_m).
+template <int TDim, int TNumNodes, bool TNormalVariation, int TNumNodesMaster = TNumNodes>
+class PenaltyMethodFrictionalMortarContactCondition
+    : public MortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONAL_PENALTY, TNormalVariation,
+                                    TNumNodesMaster> {
+public:
+    using BaseType =
+        MortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONAL_PENALTY, TNormalVariation, TNumNodesMaster>;
+    using typename BaseType::ADScalar;
+    template <class T>
+    using State = typename BaseType::template State<T>;
+    template <class T>
+    using LocalVector = typename BaseType::template LocalVector<T>;
+    using BaseType::BaseType;
+    using BaseType::Create;
+
+    Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
+                              Geometry::Pointer master) const override;
+    /// Base reset plus the previous operators (zero, not initialized).
+    void Initialize(const ProcessInfo& rCurrentProcessInfo) override;
+    /// Computes the start-of-step operators once per step (X0 + d(1)).
+    void InitializeSolutionStep(const ProcessInfo& rCurrentProcessInfo) override;
+    /// Lets the next step recompute the previous operators.
+    void FinalizeSolutionStep(const ProcessInfo& rCurrentProcessInfo) override;
+    /// @param[out] rResult [master DISPLACEMENT_*, slave DISPLACEMENT_*]
+    void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
+    void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
+    /// Σ_i s_i 3^i, s_i = 0 inactive, 1 active-slip, 2 active-stick.
+    int GetActiveInactiveValue() const override;
+    /// Adds g̃ to WEIGHTED_GAP and the weighted slip (objective iff not MODIFIED) to WEIGHTED_SLIP (historical).
+    void AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) override;
+    /// Base checks plus WEIGHTED_SLIP (historical) and a buffer ≥ 2.
+    int Check(const ProcessInfo& rCurrentProcessInfo) const override;
+    /// Paired-condition state plus the previous operators and their flags (restart with a consistent slip).
+    void Save(Serializer& rSerializer) const override;
+    void Load(Serializer& rSerializer) override;
+
+protected:
+    void InitializeResidual(const MortarOperators<double, TNumNodes, TNumNodesMaster>& operators,
+                            const ProcessInfo& rCurrentProcessInfo) override;
+    void AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
+                     LocalVector<double>& rhs) const override;
+    void AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
+                     LocalVector<ADScalar>& rhs) const override;
+
+private:
+    template <class T>
+    void AddFrictionalResidual(const State<T>& state, const ProcessInfo& rCurrentProcessInfo,
+                               LocalVector<T>& rhs) const;
+
+    frictional_detail::PreviousMortarOperators<TNumNodes, TNumNodesMaster> mPreviousMortarOperators;
+};
+
+/// Axisymmetric variant (2D2N only): every Gauss weight (current and start-of-step operators, explicit gap and
+/// slip) times 2π r / THICKNESS. Registers Penalty[NV]FrictionalAxisymMortarContactCondition2D2N.
+template <int TNumNodes, bool TNormalVariation>
+class PenaltyMethodFrictionalMortarContactAxisymCondition
+    : public PenaltyMethodFrictionalMortarContactCondition<2, TNumNodes, TNormalVariation> {
+public:
+    using BaseType = PenaltyMethodFrictionalMortarContactCondition<2, TNumNodes, TNormalVariation>;
+    using BaseType::BaseType;
+    using BaseType::Create;
+
+    Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
+                              Geometry::Pointer master) const override;
+    bool IsAxisymmetric() const override { return true; }
+};
+
+}  // namespace contact_app

@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_strategies/mortar_convergence_criteria.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "contact_app/application.h"
+#include "contact_app/kernel/exceptions.h"
+#include "custom_conditions/paired_condition.h"
+#include "custom_processes/aalm_adapt_penalty_value_process.h"
+#include "custom_utilities/active_set_utilities.h"
+#include "custom_utilities/contact_utilities.h"
+#include "custom_utilities/mortar_normals.h"
+
+namespace contact_app {
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+ModelPart* FindPart(ModelPart& rModelPart, const char* name) {
+    ModelPart& root = rModelPart.GetRootModelPart();
+    if (root.HasSubModelPart(name)) return &root.GetSubModelPart(name);
+    if (rModelPart.HasSubModelPart(name)) return &rModelPart.GetSubModelPart(name);
+    return nullptr;
+}
+
+/// A unit vector orthogonal to n (the reference's fallback tangent: in 2D (n_y, −n_x, 0)).
+Array3 OrthogonalUnit(const Array3& n) {
+    if (std::abs(n[2]) < kEps) {  // plane normals: rotate clockwise in the x–y plane
+        const Array3 t(n[1], -n[0], 0.0);
+        return t.norm() > kEps ? Array3(t / t.norm()) : Array3(1.0, 0.0, 0.0);
+    }
+    const Array3 helper = std::abs(n[0]) < 0.9 ? Array3(1.0, 0.0, 0.0) : Array3(0.0, 1.0, 0.0);
+    const Array3 t = helper - helper.dot(n) * n;
+    return t / t.norm();
+}
+
+const char* FamilyName(BaseMortarConvergenceCriteria::Family family) {
+    using F = BaseMortarConvergenceCriteria::Family;
+    switch (family) {
+        case F::ALM_FRICTIONLESS: return "ALMFrictionlessMortarConvergenceCriteria";
+        case F::ALM_FRICTIONLESS_COMPONENTS: return "ALMFrictionlessComponentsMortarConvergenceCriteria";
+        case F::ALM_FRICTIONAL: return "ALMFrictionalMortarConvergenceCriteria";
+        case F::PENALTY_FRICTIONLESS: return "PenaltyFrictionlessMortarConvergenceCriteria";
+        case F::PENALTY_FRICTIONAL: return "PenaltyFrictionalMortarConvergenceCriteria";
+        default: return "MeshTyingMortarConvergenceCriteria";
+    }
+}
+
+}  // namespace
+
+BaseMortarConvergenceCriteria::BaseMortarConvergenceCriteria(Family family, bool pure_slip)
+    : mFamily(family), mPureSlip(pure_slip) {}
+
+void BaseMortarConvergenceCriteria::UpdateNormalsAndTangents(ModelPart& rModelPart) const {
+    if (mFamily == Family::MESH_TYING) return;
+    ModelPart* contact = FindPart(rModelPart, "Contact");
+    if (contact == nullptr) return;
+    ComputeNodesMeanNormalModelPart(*contact, true);
+    if (ModelPart* computing = FindPart(rModelPart, "ComputingContact")) {
+        for (const auto& condition : computing->Conditions()) {
+            auto* pair = dynamic_cast<PairedCondition*>(condition.get());
+            if (pair == nullptr || !pair->HasPairedGeometry()) continue;
+            pair->SetValue(NORMAL, pair->GetParentGeometry().UnitNormal(Array3::Zero()));
+            pair->SetPairedNormal(pair->GetPairedGeometry().UnitNormal(Array3::Zero()));
+        }
+    }
+    if (!IsFrictional()) return;
+    // Slip direction (held constant by the tangent): ALM from the tangential multiplier, penalty / pure slip from
+    // the weighted slip; the orthogonal fallback otherwise.
+    const bool from_multiplier = mFamily == Family::ALM_FRICTIONAL && !mPureSlip &&
+                                 rModelPart.GetRootModelPart().HasNodalSolutionStepVariable(VECTOR_LAGRANGE_MULTIPLIER);
+    const bool has_slip = rModelPart.GetRootModelPart().HasNodalSolutionStepVariable(WEIGHTED_SLIP);
+    for (const auto& node : contact->Nodes()) {
+        Array3 n = node->FastGetSolutionStepValue(NORMAL);
+        if (n.norm() < kEps) continue;
+        n.normalize();
+        Array3 direction = Array3::Zero();
+        if (from_multiplier && node->Is(ACTIVE)) {
+            const Array3 lambda = node->FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER);
+            direction = lambda - lambda.dot(n) * n;
+        } else if (!from_multiplier && has_slip) {
+            const Array3 slip = node->FastGetSolutionStepValue(WEIGHTED_SLIP);
+            direction = slip - slip.dot(n) * n;
+        }
+        node->SetValue(TANGENT_XI, direction.norm() > kEps ? Array3(direction / direction.norm()) : OrthogonalUnit(n));
+    }
+}
+
+void BaseMortarConvergenceCriteria::InitializeSolutionStep(ModelPart& rModelPart, DofsArrayType&,
+                                                           const SparseMatrixType&, const SystemVectorType&,
+                                                           const SystemVectorType&, const BuilderAndSolver&) {
+    UpdateNormalsAndTangents(rModelPart);
+    ProcessInfo& info = rModelPart.GetProcessInfo();
+    info.SetValue(ACTIVE_SET_CONVERGED, true);
+    if (IsFrictional()) info.SetValue(SLIP_SET_CONVERGED, true);
+}
+
+bool BaseMortarConvergenceCriteria::PreCriteria(ModelPart& rModelPart, DofsArrayType&, const SparseMatrixType&,
+                                                const SystemVectorType&, const SystemVectorType&) {
+    const ProcessInfo& info = rModelPart.GetProcessInfo();
+    const int normal_variation = info.Has(CONSIDER_NORMAL_VARIATION) ? info.GetValue(CONSIDER_NORMAL_VARIATION) : 0;
+    if (normal_variation != 0 || IsFrictional()) UpdateNormalsAndTangents(rModelPart);
+    if (info.Has(ADAPT_PENALTY) && info.GetValue(ADAPT_PENALTY))
+        if (ModelPart* contact = FindPart(rModelPart, "Contact")) AALMAdaptPenaltyValueProcess(*contact).Execute();
+    return true;
+}
+
+void BaseMortarConvergenceCriteria::CountSets(ModelPart& rModelPart) {
+    mActiveNodes = mSlipNodes = 0;
+    ModelPart* contact = FindPart(rModelPart, "Contact");
+    if (contact == nullptr) return;
+    for (const auto& node : contact->Nodes()) {
+        if (!node->Is(SLAVE) || !node->Is(ACTIVE)) continue;
+        ++mActiveNodes;
+        if (node->Is(SLIP)) ++mSlipNodes;
+    }
+}
+
+bool BaseMortarConvergenceCriteria::PostCriteria(ModelPart& rModelPart, DofsArrayType&, const SparseMatrixType&,
+                                                 const SystemVectorType&, const SystemVectorType&,
+                                                 const BuilderAndSolver&) {
+    mActiveFlips = mSlipFlips = 0;
+    ProcessInfo& info = rModelPart.GetProcessInfo();
+    if (mFamily == Family::MESH_TYING) return true;
+    ModelPart& root = rModelPart.GetRootModelPart();
+    ModelPart* computing = FindPart(rModelPart, "ComputingContact");
+    ModelPart* contact = FindPart(rModelPart, "Contact");
+    CONTACT_CHECK(contact != nullptr, InputError, FamilyName(mFamily), ": the model part ", root.FullName(),
+                  " has no \"Contact\" sub model part\n  fix: add a contact process (alm_contact_process, ...) to the",
+                  " processes of the analysis");
+    if (root.HasNodalSolutionStepVariable(WEIGHTED_GAP) && root.GetBufferSize() > 1)
+        for (const auto& node : contact->Nodes())
+            node->FastGetSolutionStepValue(WEIGHTED_GAP, 1) = node->FastGetSolutionStepValue(WEIGHTED_GAP);
+    if (computing != nullptr) ContactUtilities::ComputeExplicitContributionConditions(*computing);
+
+    // The set utilities look for "Contact" under the model part they get and honour its INTERACTION flag.
+    ModelPart& owner = contact->GetParentModelPart();
+    switch (mFamily) {
+        case Family::ALM_FRICTIONLESS: mActiveFlips = ActiveSetUtilities::ComputeALMFrictionlessActiveSet(owner); break;
+        case Family::ALM_FRICTIONLESS_COMPONENTS:
+            mActiveFlips = ActiveSetUtilities::ComputeALMFrictionlessComponentsActiveSet(owner);
+            break;
+        case Family::PENALTY_FRICTIONLESS:
+            mActiveFlips = ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet(owner);
+            break;
+        case Family::ALM_FRICTIONAL: {
+            const auto flips = ActiveSetUtilities::ComputeALMFrictionalActiveSet(owner, mPureSlip);
+            mActiveFlips = flips[0];
+            mSlipFlips = flips[1];
+            break;
+        }
+        case Family::PENALTY_FRICTIONAL: {
+            const auto flips = ActiveSetUtilities::ComputePenaltyFrictionalActiveSet(owner, mPureSlip);
+            mActiveFlips = flips[0];
+            mSlipFlips = flips[1];
+            break;
+        }
+        default: break;
+    }
+    CountSets(rModelPart);
+    info.SetValue(ACTIVE_SET_CONVERGED, mActiveFlips == 0);
+    if (IsFrictional()) info.SetValue(SLIP_SET_CONVERGED, mSlipFlips == 0);
+    return mActiveFlips == 0 && mSlipFlips == 0;
+}
+
+std::string BaseMortarConvergenceCriteria::LastNorms() const {
+    std::ostringstream out;
+    out << "active " << mActiveNodes << " (" << mActiveFlips << " changed)";
+    if (IsFrictional()) out << ", slip " << mSlipNodes << " (" << mSlipFlips << " changed)";
+    return out.str();
+}
+
+std::string BaseMortarConvergenceCriteria::Info() const { return FamilyName(mFamily); }
+
+}  // namespace contact_app

@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <string>
+
+#include "contact_app/solving/convergence_criteria/convergence_criteria.h"
+
+namespace contact_app {
+
+/// The active-set (and stick/slip) convergence of a mortar contact formulation (Kratos
+/// BaseMortarConvergenceCriteria and its family criteria, kratos_cpp_internals.md §9, kratos_residuals.md §6).
+/// It is combined with the user's criterion by AND: a step converges when the unknowns do and the sets stop
+/// changing.
+/// - InitializeSolutionStep: mean nodal normals of the "Contact" part, condition NORMALs of the pairs, tangents.
+/// - PreCriteria: the same when CONSIDER_NORMAL_VARIATION ≠ 0 (normals follow the deformation inside the step);
+///   adaptive penalty when ADAPT_PENALTY.
+/// - PostCriteria: WEIGHTED_GAP(1) := WEIGHTED_GAP, the weighted gap (and slip) recomputed by every pair's
+///   AddExplicitContribution, then the family's active-set update (ActiveSetUtilities); converged iff no flag
+///   changed. ACTIVE_SET_CONVERGED (and SLIP_SET_CONVERGED) are stored in the ProcessInfo.
+/// The criteria find the parts by name under the root model part: "Contact" (slave nodes, skin conditions) and
+/// "ComputingContact" (the pairs).
+class BaseMortarConvergenceCriteria : public ConvergenceCriteria {
+public:
+    /// Which set update the family uses.
+    enum class Family {
+        ALM_FRICTIONLESS,
+        ALM_FRICTIONLESS_COMPONENTS,
+        ALM_FRICTIONAL,
+        PENALTY_FRICTIONLESS,
+        PENALTY_FRICTIONAL,
+        MESH_TYING
+    };
+
+    /// @param pure_slip frictional families: every active node slips (the slip set is not judged)
+    explicit BaseMortarConvergenceCriteria(Family family, bool pure_slip = false);
+
+    void InitializeSolutionStep(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
+                                const SystemVectorType& rDx, const SystemVectorType& rB,
+                                const BuilderAndSolver& rBuilder) override;
+    bool PreCriteria(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
+                     const SystemVectorType& rDx, const SystemVectorType& rB) override;
+    bool PostCriteria(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
+                      const SystemVectorType& rDx, const SystemVectorType& rB, const BuilderAndSolver& rBuilder) override;
+    std::string LastNorms() const override;
+    std::string Info() const override;
+
+    /// Flips of the last update: {ACTIVE, SLIP}.
+    std::size_t LastActiveFlips() const { return mActiveFlips; }
+    std::size_t LastSlipFlips() const { return mSlipFlips; }
+    /// Active and slipping slave nodes after the last update.
+    std::size_t ActiveNodes() const { return mActiveNodes; }
+    std::size_t SlipNodes() const { return mSlipNodes; }
+
+    /// Recomputes the nodal mean normals of "Contact", the NORMAL of every pair and, for the frictional families,
+    /// the nodal slip direction TANGENT_XI (kratos_residuals.md §3.3.3). Public for the strategies and tests.
+    void UpdateNormalsAndTangents(ModelPart& rModelPart) const;
+
+private:
+    bool IsFrictional() const { return mFamily == Family::ALM_FRICTIONAL || mFamily == Family::PENALTY_FRICTIONAL; }
+    void CountSets(ModelPart& rModelPart);
+
+    Family mFamily;
+    bool mPureSlip;
+    std::size_t mActiveFlips = 0, mSlipFlips = 0, mActiveNodes = 0, mSlipNodes = 0;
+};
+
+}  // namespace contact_app

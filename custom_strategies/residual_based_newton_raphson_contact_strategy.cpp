@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_strategies/residual_based_newton_raphson_contact_strategy.h"
+
+#include "contact_app/application.h"
+#include "contact_app/kernel/exceptions.h"
+#include "custom_utilities/contact_utilities.h"
+
+namespace contact_app {
+
+ResidualBasedNewtonRaphsonContactStrategy::ResidualBasedNewtonRaphsonContactStrategy(
+    ModelPart& rModelPart, Scheme::Pointer scheme, BuilderAndSolver::Pointer builder,
+    ConvergenceCriteria::Pointer criteria, int max_iterations, StrategySettings settings,
+    ContactStrategySettings contact_settings)
+    : NewtonRaphsonStrategy(rModelPart, std::move(scheme), std::move(builder), std::move(criteria), max_iterations,
+                            settings),
+      mContactSettings(contact_settings) {
+    CONTACT_CHECK(contact_settings.inner_loop_iterations >= 1, InputError,
+                  "contact_settings.inner_loop_iterations must be at least 1, got ",
+                  contact_settings.inner_loop_iterations);
+}
+
+void ResidualBasedNewtonRaphsonContactStrategy::Initialize() {
+    NewtonRaphsonStrategy::Initialize();
+    mModelPart.GetProcessInfo().SetValue(NL_ITERATION_NUMBER, 1);
+}
+
+void ResidualBasedNewtonRaphsonContactStrategy::ComputeExplicitContributions() {
+    ModelPart& root = mModelPart.GetRootModelPart();
+    if (root.HasSubModelPart("ComputingContact"))
+        ContactUtilities::ComputeExplicitContributionConditions(root.GetSubModelPart("ComputingContact"));
+}
+
+void ResidualBasedNewtonRaphsonContactStrategy::Predict() {
+    NewtonRaphsonStrategy::Predict();
+    ComputeExplicitContributions();
+}
+
+bool ResidualBasedNewtonRaphsonContactStrategy::SolveSolutionStep() {
+    ProcessInfo& info = mModelPart.GetProcessInfo();
+    const bool full_semi_smooth = mModelPart.IsNotDefined(INTERACTION) || mModelPart.Is(INTERACTION);
+    if (full_semi_smooth) {
+        mInnerLoops = 1;
+        return NewtonRaphsonStrategy::SolveSolutionStep();
+    }
+    bool converged = false;
+    for (mInnerLoops = 1; mInnerLoops <= mContactSettings.inner_loop_iterations; ++mInnerLoops) {
+        info.SetValue(INNER_LOOP_ITERATION, mInnerLoops);
+        converged = NewtonRaphsonStrategy::SolveSolutionStep();
+        // The set is frozen after the first iteration of a loop: ask the criteria once more whether it still holds.
+        info.SetValue(NL_ITERATION_NUMBER, 1);
+        if (mCriteria->GetActualizeRHSflag()) mBuilder->BuildRHS(*mScheme, mModelPart, mB);
+        const bool set_converged = mCriteria->PostCriteria(mModelPart, mBuilder->GetDofSet(), mA, mDx, mB, *mBuilder);
+        if (converged && set_converged) break;
+    }
+    mInnerLoops = std::min(mInnerLoops, mContactSettings.inner_loop_iterations);
+    mConverged = converged;
+    return converged;
+}
+
+}  // namespace contact_app

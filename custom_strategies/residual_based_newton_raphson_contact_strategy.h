@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include "contact_app/solving/strategies/newton_raphson_strategy.h"
+
+namespace contact_app {
+
+/// Settings of the contact Newton strategy (contact_settings keys of the same names).
+struct ContactStrategySettings {
+    /// Active-set loops of the simplified semi-smooth Newton (model part not INTERACTION).
+    int inner_loop_iterations = 5;
+};
+
+/// Newton–Raphson for mortar contact (Kratos ResidualBasedNewtonRaphsonContactStrategy,
+/// kratos_cpp_internals.md §8.1, data flow §12).
+/// - Predict: the scheme's prediction, then the weighted gaps (and slips) of the pairs in "ComputingContact"
+///   are recomputed at the predicted configuration (the active-set criteria and the first build need them).
+/// - SolveSolutionStep: with the model part flagged INTERACTION (the default, full semi-smooth Newton) one Newton
+///   loop in which the mortar criterion updates the active set at every iteration; otherwise (simplified
+///   semi-smooth Newton) up to inner_loop_iterations Newton loops, the set being updated only at the first
+///   iteration of each (NL_ITERATION_NUMBER == 1) and the loop stopping when it no longer changes.
+/// Step splitting on non-convergence (adaptative_strategy) is done by the Python contact solver, which owns the
+/// processes that must run in each sub-step.
+class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
+public:
+    ResidualBasedNewtonRaphsonContactStrategy(ModelPart& rModelPart, Scheme::Pointer scheme,
+                                              BuilderAndSolver::Pointer builder, ConvergenceCriteria::Pointer criteria,
+                                              int max_iterations = 30, StrategySettings settings = {},
+                                              ContactStrategySettings contact_settings = {});
+
+    void Initialize() override;
+    void Predict() override;
+    bool SolveSolutionStep() override;
+
+    /// Inner (active-set) loops used by the last step (1 with the full semi-smooth Newton).
+    int GetInnerLoopIterations() const { return mInnerLoops; }
+
+private:
+    void ComputeExplicitContributions();
+
+    ContactStrategySettings mContactSettings;
+    int mInnerLoops = 0;
+};
+
+}  // namespace contact_app

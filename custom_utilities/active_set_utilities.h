@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+namespace contact_app {
+
+class ModelPart;
+
+/// Semi-smooth Newton active-set and stick/slip updates of the mortar contact families (Kratos
+/// ActiveSetUtilities, kratos_cpp_internals.md §5.3, kratos_residuals.md §6). Each function evaluates the
+/// SLAVE nodes of the sub model part "Contact" of @p model_part (of @p model_part itself when it has no such
+/// child), writes AUGMENTED_NORMAL_CONTACT_PRESSURE (and AUGMENTED_TANGENT_CONTACT_PRESSURE for friction) as
+/// non-historical values and returns the number of flips (0 = the set converged). Nothing is evaluated (0 is
+/// returned) unless @p model_part Is(INTERACTION) (full semi-smooth Newton) or NL_ITERATION_NUMBER == 1.
+/// Inputs: k = ProcessInfo SCALE_FACTOR, ε = nodal INITIAL_PENALTY if the node has it else the ProcessInfo one,
+/// g̃ = WEIGHTED_GAP, ũτ = WEIGHTED_SLIP, n = NORMAL, μ = nodal FRICTION_COEFFICIENT, κ = TANGENT_FACTOR,
+/// SLIP_AUGMENTATION_COEFFICIENT and SLIP_THRESHOLD (ProcessInfo, default 0). Comparisons are strict ("< 0").
+/// Deviations: the penalty slip traction has the orientation of its stick value (reference [BUG?] B10), and a
+/// slip traction with a zero tangential multiplier follows λ̄τ instead of being NaN.
+namespace ActiveSetUtilities {
+
+/// @brief λ̄n = ε g̃; ACTIVE ⇔ λ̄n < 0. @return the number of nodes whose ACTIVE flag changed
+std::size_t ComputePenaltyFrictionlessActiveSet(ModelPart& model_part);
+/// @brief λ̄n = k λ + ε g̃ (λ = LAGRANGE_MULTIPLIER_CONTACT_PRESSURE); on activation λ := λ̄n / k.
+/// @return the number of ACTIVE flips
+std::size_t ComputeALMFrictionlessActiveSet(ModelPart& model_part);
+/// @brief λ̄n = k n·λ + ε g̃ (λ = VECTOR_LAGRANGE_MULTIPLIER); on activation λ := n λ̄n / k.
+/// @return the number of ACTIVE flips
+std::size_t ComputeALMFrictionlessComponentsActiveSet(ModelPart& model_part);
+/// @brief Penalty frictional: λ̄n = ε g̃; active nodes: λ̄τ = κ ε ũτ, stick ⇔ |λ̄τ| ≤ −μ λ̄n, slip traction
+///        −μ λ̄n ũτ/|ũτ|; inactive nodes: ũτ := 0, SLIP reset. @param[in] pure_slip every active node slips
+/// @return {ACTIVE flips, SLIP flips} (slip flips are not counted in pure slip)
+std::array<std::size_t, 2> ComputePenaltyFrictionalActiveSet(ModelPart& model_part, bool pure_slip = false);
+/// @brief ALM frictional: λ̄n = k n·λ + ε g̃, λ̄τ = k λτ + c κ ε ũτ (c = SLIP_AUGMENTATION_COEFFICIENT on slipping
+///        nodes, else 1); on activation λ := n λ̄n/k + λ̄τ/k (λ̄τ dropped when μ < machine ε); slip ⇔
+///        |λ̄τ| / (−μ λ̄n) > 1 − SLIP_THRESHOLD (slipping node) or > 1 (sticking node); slip traction
+///        −μ λ̄n λτ/|λτ|; inactive nodes: ũτ := 0, SLIP reset. @param[in] pure_slip every active node slips
+/// @return {ACTIVE flips, SLIP flips}
+std::array<std::size_t, 2> ComputeALMFrictionalActiveSet(ModelPart& model_part, bool pure_slip = false);
+
+}  // namespace ActiveSetUtilities
+
+}  // namespace contact_app

@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_utilities/contact_utilities.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "contact_app/application.h"
+#include "contact_app/kernel/exceptions.h"
+#include "contact_app/kernel/model_part.h"
+
+namespace contact_app {
+
+namespace {
+
+/// Sets a nodal double to zero where the model stores it (historical first, as the conditions write it).
+void ZeroNodal(Node& node, const Variable<double>& variable) {
+    if (node.SolutionStepsDataHas(variable)) node.FastGetSolutionStepValue(variable) = 0.0;
+    else node.SetValue(variable, 0.0);
+}
+
+void ZeroNodal(Node& node, const Variable<Array3>& variable) {
+    if (node.SolutionStepsDataHas(variable)) node.FastGetSolutionStepValue(variable) = Array3::Zero();
+    else if (node.Has(variable)) node.SetValue(variable, Array3(Array3::Zero()));
+}
+
+}  // namespace
+
+double ContactUtilities::NodalH(const Node& node) {
+    return node.SolutionStepsDataHas(NODAL_H) ? node.FastGetSolutionStepValue(NODAL_H) : node.GetValue(NODAL_H);
+}
+
+double ContactUtilities::CalculateMaxNodalH(const ModelPart& model_part) {
+    double result = 0.0;
+    for (const auto& node : model_part.Nodes()) result = std::max(result, NodalH(*node));
+    return result;
+}
+
+double ContactUtilities::CalculateMeanNodalH(const ModelPart& model_part) {
+    if (model_part.NumberOfNodes() == 0) return 0.0;
+    double sum = 0.0;
+    for (const auto& node : model_part.Nodes()) sum += NodalH(*node);
+    return sum / static_cast<double>(model_part.NumberOfNodes());
+}
+
+double ContactUtilities::CalculateMinimalNodalH(const ModelPart& model_part) {
+    // The reference starts its buffers at 0 and keeps the larger value ([BUG?]): this is a true minimum.
+    if (model_part.NumberOfNodes() == 0) return 0.0;
+    double result = std::numeric_limits<double>::max();
+    for (const auto& node : model_part.Nodes()) result = std::min(result, NodalH(*node));
+    return result;
+}
+
+double ContactUtilities::CalculateRelativeSizeMesh(const ModelPart& model_part) {
+    const double minimum = CalculateMinimalNodalH(model_part);
+    CONTACT_CHECK(minimum > 0.0, InputError, "CalculateRelativeSizeMesh: model part ", model_part.FullName(),
+                  " has a node with NODAL_H ", minimum, "\n  expected: positive nodal sizes",
+                  "\n  fix: run FindNodalHProcess on the model part first");
+    return CalculateMaxNodalH(model_part) / minimum;
+}
+
+void ContactUtilities::ComputeStepJump(ModelPart& model_part, double delta_time, bool half_step) {
+    const double velocity_factor = half_step ? 0.25 : 0.5;
+    const double acceleration_factor = half_step ? 0.125 : 0.5;
+    const Variable<double>* displacement_components[3] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
+    for (const auto& node : model_part.Nodes()) {
+        CONTACT_CHECK(node->SolutionStepsDataHas(VELOCITY) && node->SolutionStepsDataHas(ACCELERATION), InputError,
+                      "ComputeStepJump: node ", node->Id(), " of model part ", model_part.FullName(),
+                      " does not store VELOCITY and ACCELERATION\n  fix: use a dynamic solver (it adds them) or",
+                      " disable dynamic_search");
+        const Array3& velocity = node->GetSolutionStepValue(VELOCITY, 0);
+        const Array3& velocity_old = node->GetSolutionStepValue(VELOCITY, 1);
+        const Array3& acceleration_old = node->GetSolutionStepValue(ACCELERATION, 1);
+        Array3 jump = velocity_factor * delta_time * (velocity + velocity_old) +
+                      acceleration_factor * delta_time * delta_time * acceleration_old;
+        for (int c = 0; c < 3; ++c)
+            if (node->IsFixed(*displacement_components[c])) jump[c] = 0.0;
+        node->SetValue(DELTA_COORDINATES, jump);
+    }
+}
+
+Array3 ContactUtilities::GetHalfJumpCenter(const Geometry& geometry) {
+    Matrix local_nodes;
+    geometry.PointsLocalCoordinates(local_nodes);
+    Array3 local_center = Array3::Zero();
+    for (int j = 0; j < local_nodes.cols(); ++j) local_center[j] = local_nodes.col(j).mean();
+    Vector N;
+    geometry.ShapeFunctionsValues(N, local_center);
+    Array3 center = geometry.Center();
+    for (std::size_t i = 0; i < geometry.size(); ++i) center += N[i] * geometry[i].GetValue(DELTA_COORDINATES);
+    return center;
+}
+
+bool ContactUtilities::CheckActivity(const ModelPart& model_part, bool throw_error) {
+    const bool is_active = std::any_of(model_part.Nodes().begin(), model_part.Nodes().end(),
+                                       [](const Node::Pointer& node) { return node->Is(SLAVE) && node->Is(ACTIVE); });
+    CONTACT_CHECK(is_active || !throw_error, ConvergenceError, "CONTACT LOST: no SLAVE node of model part ",
+                  model_part.FullName(), " is ACTIVE\n  fix: check the loads and supports (a body may have",
+                  " separated), or the search parameters (search_factor, active_check_factor)");
+    return is_active;
+}
+
+bool ContactUtilities::CheckModelPartHasRotationDoF(const ModelPart& model_part) {
+    return std::any_of(model_part.Nodes().begin(), model_part.Nodes().end(), [](const Node::Pointer& node) {
+        return node->HasDofFor(ROTATION_X) || node->HasDofFor(ROTATION_Y) || node->HasDofFor(ROTATION_Z);
+    });
+}
+
+void ContactUtilities::CleanContactModelParts(ModelPart& model_part) {
+    std::vector<IndexType> pairs;
+    for (const auto& condition : model_part.Conditions())
+        if (condition->GetGeometry().NumberOfGeometryParts() != 0) pairs.push_back(condition->Id());
+    for (const IndexType id : pairs) model_part.RemoveCondition(id);
+}
+
+void ContactUtilities::ComputeExplicitContributionConditions(ModelPart& model_part) {
+    for (const auto& condition : model_part.Conditions()) {
+        Geometry& geometry = condition->GetGeometry();
+        for (std::size_t i = 0; i < geometry.size(); ++i) {
+            ZeroNodal(geometry[i], WEIGHTED_GAP);
+            ZeroNodal(geometry[i], WEIGHTED_SLIP);
+            geometry[i].SetValue(NODAL_AREA, 0.0);
+        }
+    }
+    const ProcessInfo& process_info = model_part.GetProcessInfo();
+    for (const auto& condition : model_part.Conditions()) condition->AddExplicitContribution(process_info);
+}
+
+void ContactUtilities::ActivateConditionWithActiveNodes(ModelPart& model_part) {
+    for (const auto& condition : model_part.Conditions()) {
+        const Geometry& geometry = condition->GetGeometry();
+        const Geometry& slave = geometry.NumberOfGeometryParts() != 0 ? geometry.GetGeometryPart(0) : geometry;
+        bool is_active = false;
+        for (std::size_t i = 0; i < slave.size(); ++i) is_active = is_active || slave[i].Is(ACTIVE);
+        condition->Set(ACTIVE, is_active);
+    }
+}
+
+void ContactUtilities::ScaleNode(Array3& point, const Array3& normal, double length) {
+    point += normal * length;
+}
+
+double ContactUtilities::DistancePoints(const Array3& a, const Array3& b) {
+    return (a - b).norm();
+}
+
+}  // namespace contact_app

@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include "contact_app/kernel/geometries/geometry.h"
+#include "contact_app/kernel/types.h"
+
+namespace contact_app {
+
+class ModelPart;
+class Node;
+
+/// Model-part level helpers of the contact workflow (Kratos ContactUtilities, kratos_cpp_internals.md §5.2):
+/// nodal mesh sizes, the explicit refresh of the weighted gaps, the predicted step jump and activity checks.
+/// NODAL_H is read from the historical database when the model part stores it, else from the node's
+/// non-historical values (NodalH()). Differences from the reference: CalculateMinimalNodalH is a true minimum
+/// ([BUG?] in the reference), and ComputeExplicitContributionConditions zeroes the weighted values first.
+class ContactUtilities {
+public:
+    /// @brief NODAL_H of @p node: historical if stored, else the non-historical value (0 when absent).
+    static double NodalH(const Node& node);
+    /// @brief Largest NODAL_H of the nodes of @p model_part (0 for an empty part).
+    static double CalculateMaxNodalH(const ModelPart& model_part);
+    /// @brief Arithmetic mean of NODAL_H over the nodes of @p model_part (0 for an empty part).
+    static double CalculateMeanNodalH(const ModelPart& model_part);
+    /// @brief Smallest NODAL_H of the nodes of @p model_part (0 for an empty part).
+    static double CalculateMinimalNodalH(const ModelPart& model_part);
+    /// @brief Max / min NODAL_H. @throws InputError if the minimum is not positive (run FindNodalHProcess)
+    static double CalculateRelativeSizeMesh(const ModelPart& model_part);
+
+    /// @brief Predicted step jump DELTA_COORDINATES (non-historical) = c_v Δt (v + v_old) + c_a Δt² a_old with
+    ///        (c_v, c_a) = (0.25, 0.125) for half a step, (0.5, 0.5) for a full one; fixed DISPLACEMENT components
+    ///        are zeroed.
+    /// @param[in,out] model_part its nodes must store VELOCITY and ACCELERATION (buffer ≥ 2)
+    /// @param[in] delta_time Δt; @param[in] half_step half or full jump
+    /// @throws InputError if VELOCITY / ACCELERATION are not historical variables
+    static void ComputeStepJump(ModelPart& model_part, double delta_time, bool half_step = true);
+    /// @brief Geometry centre moved by Σ N_i(centre) DELTA_COORDINATES_i.
+    static Array3 GetHalfJumpCenter(const Geometry& geometry);
+
+    /// @brief True iff some node of @p model_part is SLAVE and ACTIVE.
+    /// @throws ConvergenceError "CONTACT LOST" if none is and @p throw_error
+    static bool CheckActivity(const ModelPart& model_part, bool throw_error = true);
+    /// @brief True iff some node of @p model_part has a ROTATION_X/Y/Z DoF.
+    static bool CheckModelPartHasRotationDoF(const ModelPart& model_part);
+    /// @brief Removes (from @p model_part and below) the conditions that are pairs (geometry with geometry parts).
+    static void CleanContactModelParts(ModelPart& model_part);
+    /// @brief Refreshes the explicit nodal contact values: zeroes WEIGHTED_GAP, WEIGHTED_SLIP (historical when
+    ///        stored, else non-historical) and NODAL_AREA on the nodes of every condition of @p model_part, then
+    ///        calls AddExplicitContribution of every condition with the root ProcessInfo.
+    static void ComputeExplicitContributionConditions(ModelPart& model_part);
+    /// @brief A pair condition is ACTIVE iff one of its slave (geometry part 0) nodes is ACTIVE; conditions without
+    ///        geometry parts use their own nodes.
+    static void ActivateConditionWithActiveNodes(ModelPart& model_part);
+
+    /// @brief Moves @p point by @p length along @p normal (point += n·L).
+    static void ScaleNode(Array3& point, const Array3& normal, double length);
+    /// @brief Euclidean distance between two points.
+    static double DistancePoints(const Array3& a, const Array3& b);
+};
+
+}  // namespace contact_app

@@ -1,0 +1,51 @@
+"""Settings helpers shared by the contact processes: the ``"0"``…``"9"`` pair blocks and errors.
+
+Kratos writes every per-pair setting as an object with the fixed keys ``"0"`` to ``"9"``
+(``kratos_python_layer.md`` §7.1); a key outside that set is an unknown key, as in Kratos.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from contact_app._core import InputError
+from contact_app.parameters import Parameters
+
+#: The pair keys Kratos accepts, in order.
+PAIR_KEYS = tuple(str(i) for i in range(10))
+
+
+def pair_block(value: Any) -> dict[str, Any]:
+    """A ``{"0": value, …, "9": value}`` default block (each value copied)."""
+    return {key: (list(value) if isinstance(value, list) else value) for key in PAIR_KEYS}
+
+
+def fail(settings: Parameters, key: str, what: str, expected: str, fix: str = "") -> InputError:
+    """An InputError in the house format (what / where / expected / fix)."""
+    message = f"{what}\n  where:    {settings.Where(key)}\n  expected: {expected}"
+    if fix:
+        message += f"\n  fix:      {fix}"
+    return InputError(message)
+
+
+def string_lists(settings: Parameters, key: str) -> dict[str, list[str]]:
+    """The non-empty ``{pair key: [model part names]}`` entries of a pair block.
+
+    Raises:
+        InputError: an entry is not a list of strings.
+    """
+    block = settings[key]
+    result: dict[str, list[str]] = {}
+    for pair in PAIR_KEYS:
+        entry = block[pair]
+        if not entry.IsArray() or not all(item.IsString() for item in entry):
+            raise fail(
+                block,
+                pair,
+                f'"{key}"["{pair}"] is {entry.WriteJsonString()}',
+                'a list of model part names, e.g. ["Contact_Part"]',
+            )
+        names = entry.GetStringArray()
+        if names:
+            result[pair] = names
+    return result

@@ -1,0 +1,328 @@
+"""What the contact solvers add to the structural ones (Kratos ``auxiliary_methods_solvers``).
+
+``contact_settings`` defaults and checks, the historical variables and DoFs of each
+``mortar_type`` (``kratos_python_layer.md`` §6.1–6.3) and the mixin the static and implicit
+dynamic contact solvers share.
+"""
+
+from __future__ import annotations
+
+import logging
+from typing import Any
+
+import contact_app as ca
+from contact_app.analysis.solvers.convergence_criteria_factory import (
+    CONTACT_CRITERIA,
+    STRUCTURAL_CRITERIA,
+    check_criterion_name,
+)
+from contact_app.analysis.validation import error, not_supported
+from contact_app.parameters import Parameters, suggest
+
+from .contact_convergence_criteria_factory import CreateContactConvergenceCriterion
+
+logger = logging.getLogger("contact_app.contact")
+
+MORTAR_TYPES = (
+    "ALMContactFrictionless",
+    "ALMContactFrictionlessComponents",
+    "ALMContactFrictional",
+    "ALMContactFrictionalPureSlip",
+    "PenaltyContactFrictionless",
+    "PenaltyContactFrictional",
+    "PenaltyContactFrictionalPureSlip",
+    "ScalarMeshTying",
+    "ComponentsMeshTying",
+)
+
+MIXED_ULM_DEFAULTS = {
+    "solver_type": "mixed_ulm_linear_solver",
+    "tolerance": 1.0e-6,
+    "max_iteration_number": 200,
+    "echo_level": 0,
+}
+
+CONTACT_SETTINGS_DEFAULTS: dict[str, Any] = {
+    "mortar_type": "",
+    "condn_convergence_criterion": False,
+    "fancy_convergence_criterion": True,
+    "print_convergence_criterion": False,
+    "ensure_contact": False,
+    "frictional_decomposed": True,
+    "compute_dynamic_factor": False,
+    "gidio_debug": False,
+    "adaptative_strategy": False,
+    "split_factor": 10.0,
+    "max_number_splits": 3,
+    "inner_loop_iterations": 5,
+    "inner_loop_adaptive": False,
+    "rotation_relative_tolerance": 1.0e-4,
+    "rotation_absolute_tolerance": 1.0e-9,
+    "rotation_residual_relative_tolerance": 1.0e-4,
+    "rotation_residual_absolute_tolerance": 1.0e-9,
+    "contact_displacement_relative_tolerance": 1.0e-4,
+    "contact_displacement_absolute_tolerance": 1.0e-9,
+    "contact_residual_relative_tolerance": 1.0e-4,
+    "contact_residual_absolute_tolerance": 1.0e-9,
+    "frictional_stick_contact_displacement_relative_tolerance": 1.0e-4,
+    "frictional_stick_contact_displacement_absolute_tolerance": 1.0e-9,
+    "frictional_stick_contact_residual_relative_tolerance": 1.0e-4,
+    "frictional_stick_contact_residual_absolute_tolerance": 1.0e-9,
+    "frictional_slip_contact_displacement_relative_tolerance": 1.0e-4,
+    "frictional_slip_contact_displacement_absolute_tolerance": 1.0e-9,
+    "frictional_slip_contact_residual_relative_tolerance": 1.0e-4,
+    "frictional_slip_contact_residual_absolute_tolerance": 1.0e-9,
+    "ratio_normal_tangent_threshold": 1.0e-4,
+    "silent_strategy": True,
+    "simplified_semi_smooth_newton": False,
+    "rescale_linear_solver": False,
+    "use_mixed_ulm_solver": True,
+    "mixed_ulm_solver_parameters": MIXED_ULM_DEFAULTS,
+}
+
+#: Older names of the frictional tolerances (no stick / slip split): both blocks take the value.
+OLD_FRICTIONAL_KEYS = {
+    f"frictional_contact_{kind}_{measure}_tolerance": (
+        f"frictional_stick_contact_{kind}_{measure}_tolerance",
+        f"frictional_slip_contact_{kind}_{measure}_tolerance",
+    )
+    for kind in ("displacement", "residual")
+    for measure in ("relative", "absolute")
+}
+
+
+def convert_old_frictional_keys(contact: Parameters) -> None:
+    """Turn the pre-split ``frictional_contact_*_tolerance`` keys into the stick and slip ones."""
+    for old, new_keys in OLD_FRICTIONAL_KEYS.items():
+        if contact.Has(old):
+            value = contact[old].GetDouble()
+            contact.RemoveValue(old)
+            for new in new_keys:
+                if not contact.Has(new):
+                    contact.AddValue(new, value)
+            logger.warning('contact_settings: "%s" is deprecated; using it for stick and slip', old)
+
+
+def mortar_variables(mortar_type: str) -> list[Any]:
+    """Historical variables a mortar_type needs besides the structural ones (§6.3)."""
+    variables = [ca.NORMAL, ca.NODAL_H]
+    if mortar_type == "ALMContactFrictionless":
+        variables += [
+            ca.LAGRANGE_MULTIPLIER_CONTACT_PRESSURE,
+            ca.WEIGHTED_GAP,
+            ca.WEIGHTED_SCALAR_RESIDUAL,
+        ]
+    elif mortar_type == "ALMContactFrictionlessComponents":
+        variables += [ca.VECTOR_LAGRANGE_MULTIPLIER, ca.WEIGHTED_GAP, ca.WEIGHTED_VECTOR_RESIDUAL]
+    elif mortar_type.startswith("ALMContactFrictional"):
+        variables += [
+            ca.VECTOR_LAGRANGE_MULTIPLIER,
+            ca.WEIGHTED_GAP,
+            ca.WEIGHTED_SLIP,
+            ca.WEIGHTED_VECTOR_RESIDUAL,
+        ]
+    elif mortar_type == "PenaltyContactFrictionless":
+        variables += [ca.WEIGHTED_GAP]
+    elif mortar_type.startswith("PenaltyContactFrictional"):
+        variables += [ca.WEIGHTED_GAP, ca.WEIGHTED_SLIP]
+    elif mortar_type == "ScalarMeshTying":
+        variables += [ca.SCALAR_LAGRANGE_MULTIPLIER, ca.WEIGHTED_SCALAR_RESIDUAL]
+    elif mortar_type == "ComponentsMeshTying":
+        variables += [ca.VECTOR_LAGRANGE_MULTIPLIER, ca.WEIGHTED_VECTOR_RESIDUAL]
+    return variables
+
+
+def mortar_dofs(mortar_type: str) -> list[tuple[Any, Any]]:
+    """(DoF, reaction) pairs a mortar_type adds to every node (§6.3)."""
+    vector = [
+        (ca.VECTOR_LAGRANGE_MULTIPLIER_X, ca.WEIGHTED_VECTOR_RESIDUAL_X),
+        (ca.VECTOR_LAGRANGE_MULTIPLIER_Y, ca.WEIGHTED_VECTOR_RESIDUAL_Y),
+        (ca.VECTOR_LAGRANGE_MULTIPLIER_Z, ca.WEIGHTED_VECTOR_RESIDUAL_Z),
+    ]
+    if mortar_type == "ALMContactFrictionless":
+        return [(ca.LAGRANGE_MULTIPLIER_CONTACT_PRESSURE, ca.WEIGHTED_SCALAR_RESIDUAL)]
+    if mortar_type == "ScalarMeshTying":
+        return [(ca.SCALAR_LAGRANGE_MULTIPLIER, ca.WEIGHTED_SCALAR_RESIDUAL)]
+    if mortar_type in ("ALMContactFrictionlessComponents", "ComponentsMeshTying"):
+        return vector
+    if mortar_type.startswith("ALMContactFrictional"):
+        return vector
+    return []
+
+
+def check_mortar_type(contact: Parameters) -> str:
+    """The validated ``mortar_type``. Raises InputError for an unknown or empty value."""
+    mortar_type = contact["mortar_type"].GetString()
+    if mortar_type not in MORTAR_TYPES:
+        raise error(
+            contact,
+            "mortar_type",
+            f'unknown mortar_type "{mortar_type}"' if mortar_type else "mortar_type is empty",
+            "one of " + ", ".join(f'"{t}"' for t in MORTAR_TYPES),
+            suggest(mortar_type, list(MORTAR_TYPES)) or "name the contact formulation",
+        )
+    return mortar_type
+
+
+class ContactSolverMixin:
+    """Contact additions to a structural solver (used before the structural base in the MRO)."""
+
+    main_model_part: ca.ModelPart
+    settings: Parameters
+
+    @classmethod
+    def GetDefaultParameters(cls) -> dict[str, Any]:
+        """The structural defaults plus ``contact_settings``."""
+        defaults = super().GetDefaultParameters()  # type: ignore[misc]
+        defaults["contact_settings"] = CONTACT_SETTINGS_DEFAULTS
+        return defaults
+
+    def ValidateSettings(self) -> None:
+        """Structural checks, then ``contact_settings`` (unknown keys are errors)."""
+        contact = self.settings["contact_settings"]
+        convert_old_frictional_keys(contact)
+        contact.RecursivelyValidateAndAssignDefaults(CONTACT_SETTINGS_DEFAULTS)
+        self.mortar_type = check_mortar_type(contact)
+        if contact["adaptative_strategy"].GetBool():
+            raise not_supported(
+                contact,
+                "adaptative_strategy",
+                "step splitting inside the contact strategy",
+                "the analysis reports a step that does not converge; reduce time_step instead",
+            )
+        if contact["split_factor"].GetDouble() <= 1.0:
+            raise error(contact, "split_factor", "split_factor ≤ 1", "a factor > 1")
+        if contact["inner_loop_iterations"].GetInt() < 1:
+            raise error(contact, "inner_loop_iterations", "inner_loop_iterations < 1", "≥ 1")
+        # Pairs appear and disappear between steps: the DoF set is rebuilt every step.
+        self.settings["reform_dofs_at_each_step"].SetBool(True)
+        self.settings["clear_storage"].SetBool(True)
+        super().ValidateSettings()  # type: ignore[misc]
+
+    def _CheckCriterionName(self) -> None:
+        """Structural and contact criterion names are both valid here."""
+        check_criterion_name(self.settings, STRUCTURAL_CRITERIA + CONTACT_CRITERIA)
+
+    def AddVariables(self) -> None:
+        """Structural variables plus those of the mortar_type."""
+        super().AddVariables()  # type: ignore[misc]
+        for variable in mortar_variables(self.mortar_type):
+            self.main_model_part.AddNodalSolutionStepVariable(variable)
+
+    def _DofsWithReactions(self) -> list[tuple[Any, Any]]:
+        return super()._DofsWithReactions() + mortar_dofs(self.mortar_type)  # type: ignore[misc]
+
+    def _CreateLinearSolver(self) -> Any:
+        """The structural linear solver, wrapped in the condensing solver for vector multipliers."""
+        solver = super()._CreateLinearSolver()  # type: ignore[misc]
+        contact = self.settings["contact_settings"]
+        vector_lm = self.mortar_type == "ALMContactFrictionlessComponents" or (
+            self.mortar_type.startswith("ALMContactFrictional")
+        )
+        if not (vector_lm and contact["use_mixed_ulm_solver"].GetBool()):
+            return solver
+        mixed = contact["mixed_ulm_solver_parameters"]
+        mixed.ValidateAndAssignDefaults(MIXED_ULM_DEFAULTS)
+        if mixed["solver_type"].GetString() != "mixed_ulm_linear_solver":
+            raise error(
+                mixed,
+                "solver_type",
+                f'unknown condensing solver "{mixed["solver_type"].GetString()}"',
+                '"mixed_ulm_linear_solver"',
+            )
+        return ca.MixedULMLinearSolver(solver)
+
+    def _CreateConvergenceCriterion(self) -> Any:
+        return CreateContactConvergenceCriterion(self.settings, self.mortar_type)
+
+    def _CreateSolutionStrategy(self) -> Any:
+        settings = self.settings
+        if settings["analysis_type"].GetString() == "linear":
+            return super()._CreateSolutionStrategy()  # type: ignore[misc]
+        kind = settings["solving_strategy_settings"]["type"].GetString()
+        if kind != "newton_raphson":
+            raise not_supported(
+                settings["solving_strategy_settings"],
+                "type",
+                f'the contact strategy "{kind}"',
+                'use "newton_raphson" (the contact line search is not available yet)',
+            )
+        contact = settings["contact_settings"]
+        return ca.ResidualBasedNewtonRaphsonContactStrategy(
+            self.GetComputingModelPart(),
+            self._GetScheme(),
+            self._GetConvergenceCriterion().criterion,
+            self._GetBuilderAndSolver(),
+            max_iteration=settings["max_iteration"].GetInt(),
+            compute_reactions=settings["compute_reactions"].GetBool(),
+            reform_step_dofs=True,
+            move_mesh_flag=settings["move_mesh_flag"].GetBool(),
+            inner_loop_iterations=contact["inner_loop_iterations"].GetInt(),
+        )
+
+    def Initialize(self) -> None:
+        """Structural initialisation; INTERACTION selects the full semi-smooth Newton.
+
+        Raises:
+            InputError: no contact process created the "Contact" part (the processes run first).
+        """
+        if not self.main_model_part.HasSubModelPart("Contact"):
+            raise ca.InputError(
+                f'the contact solver found no "Contact" sub model part in '
+                f'"{self.main_model_part.Name}"\n'
+                f"  where:    {self.settings.Where('contact_settings')}\n"
+                "  expected: a contact process (alm_contact_process, penalty_contact_process, "
+                "mesh_tying_process) in processes.contact_process_list\n"
+                "  fix:      add the contact process, or remove contact_settings (structural run)"
+            )
+        simplified = self.settings["contact_settings"]["simplified_semi_smooth_newton"].GetBool()
+        for part in (self.main_model_part, self.GetComputingModelPart()):
+            part.Set(ca.INTERACTION, not simplified)
+        super().Initialize()  # type: ignore[misc]
+        if self.settings["contact_settings"]["silent_strategy"].GetBool():
+            self._GetSolutionStrategy().SetEchoLevel(0)  # type: ignore[attr-defined]
+
+    def ContactStatus(self) -> tuple[int, int, int, float]:
+        """(active slave nodes, slipping ones, live pairs, max penetration) for the step table.
+
+        The penetration of a node is −WEIGHTED_GAP / A with A its lumped slave area in the
+        initial configuration (computed once); 0 when no node penetrates.
+        """
+        main = self.main_model_part
+        if not main.HasSubModelPart("Contact"):
+            return (0, 0, 0, 0.0)
+        contact = main.GetSubModelPart("Contact")
+        if getattr(self, "_slave_areas", None) is None:
+            areas: dict[int, float] = {}
+            for condition in contact.Conditions:
+                if condition.Is(ca.SLAVE):
+                    geometry = condition.GetGeometry()
+                    share = abs(geometry.DomainSize()) / len(geometry)
+                    for node in geometry:
+                        areas[node.Id] = areas.get(node.Id, 0.0) + share
+            self._slave_areas = areas
+        has_gap = main.HasNodalSolutionStepVariable(ca.WEIGHTED_GAP)
+        frictional = contact.Is(ca.SLIP)
+        active = slip = 0
+        penetration = 0.0
+        for node in contact.Nodes:
+            if not (node.Is(ca.SLAVE) and node.Is(ca.ACTIVE)):
+                continue
+            active += 1
+            slip += int(frictional and node.Is(ca.SLIP))
+            area = self._slave_areas.get(node.Id, 0.0)
+            if has_gap and area > 0.0:
+                gap = node.GetSolutionStepValue(ca.WEIGHTED_GAP) / area
+                penetration = max(penetration, -gap)
+        pairs = 0
+        if main.HasSubModelPart("ComputingContact"):
+            for condition in main.GetSubModelPart("ComputingContact").Conditions:
+                if condition.Is(ca.ACTIVE) and not condition.Is(ca.ISOLATED):
+                    pairs += 1
+        return (active, slip, pairs, penetration)
+
+    def FinalizeSolutionStep(self) -> None:
+        """Finalize the step; with ``ensure_contact`` a step without contact is an error."""
+        super().FinalizeSolutionStep()  # type: ignore[misc]
+        if self.settings["contact_settings"]["ensure_contact"].GetBool():
+            ca.ContactUtilities.CheckActivity(self.GetComputingModelPart(), True)

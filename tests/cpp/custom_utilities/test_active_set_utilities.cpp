@@ -1,0 +1,218 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Active-set and stick/slip rules of each contact family on hand-built nodal states: activation, deactivation,
+// multiplier reset, stick/slip with hysteresis, change counters.
+#include <gtest/gtest.h>
+
+#include "contact_app/application.h"
+#include "contact_app/kernel/exceptions.h"
+#include "contact_app/kernel/model.h"
+#include "custom_utilities/active_set_utilities.h"
+
+namespace contact_app {
+namespace {
+
+constexpr double kScale = 2.0, kPenalty = 10.0;
+
+/// Root "Structure" with a "Contact" child holding slave nodes; k = 2, ε = 10, n = +y on every node.
+class ActiveSetModel {
+public:
+    ActiveSetModel() {
+        RegisterContactApplication();
+        root = &model.CreateModelPart("Structure");
+        for (const VariableData* v :
+             {static_cast<const VariableData*>(&WEIGHTED_GAP), static_cast<const VariableData*>(&WEIGHTED_SLIP),
+              static_cast<const VariableData*>(&NORMAL), static_cast<const VariableData*>(&VECTOR_LAGRANGE_MULTIPLIER),
+              static_cast<const VariableData*>(&LAGRANGE_MULTIPLIER_CONTACT_PRESSURE)})
+            root->AddNodalSolutionStepVariable(*v);
+        contact = &root->CreateSubModelPart("Contact");
+        ProcessInfo& info = root->GetProcessInfo();
+        info.SetValue(SCALE_FACTOR, kScale);
+        info.SetValue(INITIAL_PENALTY, kPenalty);
+        info.SetValue(NL_ITERATION_NUMBER, 1);
+        info.SetValue(TANGENT_FACTOR, 1.0);
+    }
+
+    /// A slave node of Contact with gap @p gap, activity @p active and normal +y.
+    Node& Add(double gap, bool active, bool slip = false) {
+        const IndexType id = root->NumberOfNodes() + 1;
+        auto node = root->CreateNewNode(id, static_cast<double>(id), 0.0, 0.0);
+        contact->AddNodes({id});
+        node->Set(SLAVE, true);
+        node->Set(ACTIVE, active);
+        node->Set(SLIP, slip);
+        node->FastGetSolutionStepValue(WEIGHTED_GAP) = gap;
+        node->FastGetSolutionStepValue(NORMAL) = Array3(0, 1, 0);
+        return *node;
+    }
+
+    Model model;
+    ModelPart* root = nullptr;
+    ModelPart* contact = nullptr;
+};
+
+TEST(ActiveSetUtilities, test_alm_frictionless_activation_and_deactivation) {
+    ActiveSetModel m;
+    Node& opening = m.Add(-0.1, false);  // λ̄ = 0 + 10·(−0.1) = −1 → activated, λ := −1/2
+    Node& closing = m.Add(0.5, true);    // λ̄ = 2·(−1) + 5 = 3 → deactivated
+    Node& staying = m.Add(0.1, true);    // λ̄ = 2·(−3) + 1 = −5 → stays, λ kept
+    Node& open = m.Add(0.2, false);      // λ̄ = 2 → stays open
+    Node& own_penalty = m.Add(-0.1, false);
+    own_penalty.SetValue(INITIAL_PENALTY, -1.0);  // nodal ε first: λ̄ = 0.1 → stays open
+    Node& master = m.Add(-1.0, false);
+    master.Set(SLAVE, false);
+    closing.FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE) = -1.0;
+    staying.FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE) = -3.0;
+    EXPECT_EQ(ActiveSetUtilities::ComputeALMFrictionlessActiveSet(*m.root), 2u);
+    EXPECT_TRUE(opening.Is(ACTIVE));
+    EXPECT_DOUBLE_EQ(opening.FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE), -1.0 / kScale);
+    EXPECT_DOUBLE_EQ(opening.GetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE), -1.0);
+    EXPECT_FALSE(closing.Is(ACTIVE));
+    EXPECT_DOUBLE_EQ(closing.FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE), -1.0);
+    EXPECT_DOUBLE_EQ(closing.GetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE), 3.0);
+    EXPECT_TRUE(staying.Is(ACTIVE));
+    EXPECT_DOUBLE_EQ(staying.FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE), -3.0);
+    EXPECT_DOUBLE_EQ(staying.GetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE), -5.0);
+    EXPECT_FALSE(open.Is(ACTIVE));
+    EXPECT_FALSE(own_penalty.Is(ACTIVE));
+    EXPECT_DOUBLE_EQ(own_penalty.GetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE), 0.1);
+    EXPECT_FALSE(master.Is(ACTIVE));
+    EXPECT_FALSE(master.Has(AUGMENTED_NORMAL_CONTACT_PRESSURE));
+    // Converged set: a second update flips nothing.
+    EXPECT_EQ(ActiveSetUtilities::ComputeALMFrictionlessActiveSet(*m.root), 0u);
+}
+
+TEST(ActiveSetUtilities, test_set_is_frozen_after_the_first_iteration_of_the_simplified_newton) {
+    ActiveSetModel m;
+    Node& node = m.Add(-0.1, false);
+    m.root->GetProcessInfo().SetValue(NL_ITERATION_NUMBER, 2);
+    EXPECT_EQ(ActiveSetUtilities::ComputeALMFrictionlessActiveSet(*m.root), 0u);
+    EXPECT_EQ(ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet(*m.root), 0u);
+    EXPECT_FALSE(node.Is(ACTIVE));
+    m.root->Set(INTERACTION, true);  // full semi-smooth Newton: every iteration
+    EXPECT_EQ(ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet(*m.root), 1u);
+    EXPECT_TRUE(node.Is(ACTIVE));
+    m.root->GetProcessInfo().Data().Erase(SCALE_FACTOR);
+    EXPECT_THROW(ActiveSetUtilities::ComputeALMFrictionlessActiveSet(*m.root), InputError);
+}
+
+TEST(ActiveSetUtilities, test_alm_components_project_the_multiplier_on_activation) {
+    ActiveSetModel m;
+    Node& opening = m.Add(-0.1, false);  // λ̄n = 2·(n·λ) − 1 with n·λ = 0.3 → −0.4
+    Node& closing = m.Add(0.2, true);    // λ̄n = 2·(−0.5) + 2 = 1
+    opening.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) = Array3(0.7, 0.3, 0.0);
+    closing.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) = Array3(0.1, -0.5, 0.0);
+    EXPECT_EQ(ActiveSetUtilities::ComputeALMFrictionlessComponentsActiveSet(*m.root), 2u);
+    EXPECT_TRUE(opening.Is(ACTIVE));
+    EXPECT_FALSE(closing.Is(ACTIVE));
+    EXPECT_LT((opening.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) - Array3(0, -0.4 / kScale, 0)).norm(), 1e-15);
+    EXPECT_DOUBLE_EQ(closing.GetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE), 1.0);
+    EXPECT_EQ(closing.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER), Array3(0.1, -0.5, 0.0));
+}
+
+TEST(ActiveSetUtilities, test_penalty_frictionless_uses_the_weighted_gap_only) {
+    ActiveSetModel m;
+    Node& touching = m.Add(0.0, true);  // λ̄n = 0: not active (strict)
+    Node& penetrating = m.Add(-1e-3, false);
+    EXPECT_EQ(ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet(*m.root), 2u);
+    EXPECT_FALSE(touching.Is(ACTIVE));
+    EXPECT_TRUE(penetrating.Is(ACTIVE));
+    EXPECT_DOUBLE_EQ(penetrating.GetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE), kPenalty * -1e-3);
+}
+
+TEST(ActiveSetUtilities, test_penalty_frictional_stick_slip_with_consistent_orientation) {
+    ActiveSetModel m;
+    // λ̄n = 10·(−0.1) = −1, μ = 0.5 → Coulomb bound 0.5; λ̄τ = κ ε ũτ.
+    Node& stick = m.Add(-0.1, true, true);
+    stick.FastGetSolutionStepValue(WEIGHTED_SLIP) = Array3(0.01, 0, 0);  // |λ̄τ| = 0.1 ≤ 0.5 → stick
+    Node& slip = m.Add(-0.1, true, false);
+    slip.FastGetSolutionStepValue(WEIGHTED_SLIP) = Array3(-0.2, 0, 0);  // 2 > 0.5 → slip
+    Node& leaving = m.Add(0.1, true, true);
+    leaving.FastGetSolutionStepValue(WEIGHTED_SLIP) = Array3(0.3, 0, 0);
+    for (Node* node : {&stick, &slip, &leaving}) node->SetValue(FRICTION_COEFFICIENT, 0.5);
+    const auto flips = ActiveSetUtilities::ComputePenaltyFrictionalActiveSet(*m.root);
+    EXPECT_EQ(flips[0], 1u);  // leaving
+    EXPECT_EQ(flips[1], 2u);  // stick and slip swapped
+    EXPECT_FALSE(stick.Is(SLIP));
+    EXPECT_LT((stick.GetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE) - Array3(0.1, 0, 0)).norm(), 1e-15);
+    EXPECT_TRUE(slip.Is(SLIP));
+    // Slip traction μ|λ̄n| along ũτ, the orientation of the stick value κεũτ (B10 done right).
+    const Array3 slip_traction = slip.GetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE);
+    EXPECT_LT((slip_traction - Array3(-0.5, 0, 0)).norm(), 1e-15);
+    EXPECT_GT(slip_traction.dot(slip.FastGetSolutionStepValue(WEIGHTED_SLIP)), 0.0);
+    EXPECT_FALSE(leaving.Is(ACTIVE));
+    EXPECT_FALSE(leaving.Is(SLIP));
+    EXPECT_EQ(leaving.FastGetSolutionStepValue(WEIGHTED_SLIP), Array3(Array3::Zero()));
+    // Pure slip: every active node slips and slip flips are not counted.
+    stick.Set(SLIP, false);
+    const auto pure = ActiveSetUtilities::ComputePenaltyFrictionalActiveSet(*m.root, true);
+    EXPECT_EQ(pure[1], 0u);
+    EXPECT_TRUE(stick.Is(SLIP));
+    EXPECT_LT((stick.GetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE) - Array3(0.5, 0, 0)).norm(), 1e-15);
+}
+
+TEST(ActiveSetUtilities, test_alm_frictional_hysteresis_augmentation_and_activation) {
+    ActiveSetModel m;
+    ProcessInfo& info = m.root->GetProcessInfo();
+    info.SetValue(SLIP_THRESHOLD, 0.1);
+    info.SetValue(SLIP_AUGMENTATION_COEFFICIENT, 0.5);
+    // Active nodes with λ = (0.3, −1, 0): λn = −1, λτ = (0.3, 0, 0), g̃ = 0 → λ̄n = −2, k λτ = (0.6, 0, 0).
+    auto active = [&](bool slip, double mu, const Array3& weighted_slip) -> Node& {
+        Node& node = m.Add(0.0, true, slip);
+        node.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) = Array3(0.3, -1.0, 0.0);
+        node.FastGetSolutionStepValue(WEIGHTED_SLIP) = weighted_slip;
+        node.SetValue(FRICTION_COEFFICIENT, mu);
+        return node;
+    };
+    const Array3 no_slip = Array3::Zero(), small_slip(0.01, 0, 0);
+    Node& stick_stays = active(false, 0.32, no_slip);   // 0.6/0.64 = 0.94 ≤ 1 → stick
+    Node& slip_stays = active(true, 0.32, no_slip);     // 0.94 > 1 − 0.1 → still slip (hysteresis)
+    Node& slip_to_stick = active(true, 0.4, no_slip);   // 0.75 → stick
+    Node& stick_to_slip = active(false, 0.25, no_slip); // 1.2 → slip
+    Node& stick_full = active(false, 0.4, small_slip);  // λ̄τ = 0.6 + κεũτ = 0.7; 0.7/0.8 → stick
+    Node& slip_augmented = active(true, 0.375, small_slip);  // λ̄τ = 0.6 + 0.5·0.1 = 0.65; 0.867 → stick
+    Node& entering = m.Add(-0.1, false);                // λ̄n = −1, λ̄τ = κ ε ũτ = (0.2, 0, 0)
+    entering.FastGetSolutionStepValue(WEIGHTED_SLIP) = Array3(0.02, 0, 0);
+    entering.SetValue(FRICTION_COEFFICIENT, 0.5);
+    Node& leaving = m.Add(0.5, true, true);  // λ̄n = 2·(−0.1) + 5 > 0
+    leaving.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) = Array3(0, -0.1, 0);
+    leaving.FastGetSolutionStepValue(WEIGHTED_SLIP) = small_slip;
+
+    const auto flips = ActiveSetUtilities::ComputeALMFrictionalActiveSet(*m.root);
+    EXPECT_EQ(flips[0], 2u);  // entering, leaving
+    EXPECT_EQ(flips[1], 3u);  // slip_to_stick, stick_to_slip, slip_augmented
+    EXPECT_FALSE(stick_stays.Is(SLIP));
+    EXPECT_TRUE(slip_stays.Is(SLIP));
+    EXPECT_FALSE(slip_to_stick.Is(SLIP));
+    EXPECT_TRUE(stick_to_slip.Is(SLIP));
+    EXPECT_FALSE(stick_full.Is(SLIP));
+    EXPECT_FALSE(slip_augmented.Is(SLIP));
+    auto tangent = [](const Node& node) { return node.GetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE); };
+    EXPECT_LT((tangent(stick_stays) - Array3(0.6, 0, 0)).norm(), 1e-14);
+    EXPECT_LT((tangent(stick_full) - Array3(0.7, 0, 0)).norm(), 1e-14);
+    EXPECT_LT((tangent(slip_augmented) - Array3(0.65, 0, 0)).norm(), 1e-14);
+    EXPECT_LT((tangent(stick_to_slip) - Array3(0.25 * 2.0, 0, 0)).norm(), 1e-14);  // −μ λ̄n along λτ
+    EXPECT_LT((tangent(slip_stays) - Array3(0.32 * 2.0, 0, 0)).norm(), 1e-14);
+    // Activation: λ := n λ̄n/k + λ̄τ/k.
+    EXPECT_TRUE(entering.Is(ACTIVE));
+    EXPECT_LT((entering.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) - Array3(0.1, -0.5, 0)).norm(), 1e-15);
+    EXPECT_FALSE(entering.Is(SLIP));  // 0.2/0.5 → stick
+    EXPECT_FALSE(leaving.Is(ACTIVE));
+    EXPECT_FALSE(leaving.Is(SLIP));
+    EXPECT_EQ(leaving.FastGetSolutionStepValue(WEIGHTED_SLIP), Array3(Array3::Zero()));
+    // Pure slip: all active nodes slip, slip flips are not counted.
+    const auto pure = ActiveSetUtilities::ComputeALMFrictionalActiveSet(*m.root, true);
+    EXPECT_EQ(pure[1], 0u);
+    for (Node* node : {&stick_stays, &slip_to_stick, &stick_full, &entering}) EXPECT_TRUE(node->Is(SLIP));
+}
+
+TEST(ActiveSetUtilities, test_alm_frictional_frictionless_node_activation_drops_the_tangent) {
+    ActiveSetModel m;
+    Node& entering = m.Add(-0.1, false);
+    entering.FastGetSolutionStepValue(WEIGHTED_SLIP) = Array3(0.02, 0, 0);  // μ = 0: tangent not carried over
+    ActiveSetUtilities::ComputeALMFrictionalActiveSet(*m.root);
+    EXPECT_LT((entering.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) - Array3(0, -0.5, 0)).norm(), 1e-15);
+    EXPECT_TRUE(entering.Is(SLIP));  // μ = 0: any tangential traction exceeds the bound
+}
+
+}  // namespace
+}  // namespace contact_app
