@@ -6,8 +6,7 @@
 namespace contact_app {
 
 ContactMasterSlaveConstraint::ContactMasterSlaveConstraint(IndexType id, DofsVectorType master_dofs,
-                                                           DofsVectorType slave_dofs, Matrix relation,
-                                                           Vector constant)
+                                                           DofsVectorType slave_dofs, Matrix relation, Vector constant)
     : LinearMasterSlaveConstraint(id, std::move(master_dofs), std::move(slave_dofs), std::move(relation),
                                   std::move(constant)) {}
 
@@ -15,11 +14,10 @@ ContactMasterSlaveConstraint::ContactMasterSlaveConstraint(IndexType id)
     : LinearMasterSlaveConstraint(id, {}, {}, Matrix(0, 0), Vector(0)) {}
 
 MasterSlaveConstraint::Pointer ContactMasterSlaveConstraint::Create(IndexType id, DofsVectorType master_dofs,
-                                                                    DofsVectorType slave_dofs,
-                                                                    const Matrix& relation,
+                                                                    DofsVectorType slave_dofs, const Matrix& relation,
                                                                     const Vector& constant) const {
-    return std::make_shared<ContactMasterSlaveConstraint>(id, std::move(master_dofs), std::move(slave_dofs),
-                                                          relation, constant);
+    return std::make_shared<ContactMasterSlaveConstraint>(id, std::move(master_dofs), std::move(slave_dofs), relation,
+                                                          constant);
 }
 
 void ContactMasterSlaveConstraint::FinalizeNonLinearIteration(const ProcessInfo&) {}

@@ -14,8 +14,8 @@ class ContactMasterSlaveConstraint : public LinearMasterSlaveConstraint {
 public:
     ContactMasterSlaveConstraint() = default;
     /// @param relation slaves × masters; @param constant one entry per slave. @throws InputError on a size mismatch
-    ContactMasterSlaveConstraint(IndexType id, DofsVectorType master_dofs, DofsVectorType slave_dofs,
-                                 Matrix relation, Vector constant);
+    ContactMasterSlaveConstraint(IndexType id, DofsVectorType master_dofs, DofsVectorType slave_dofs, Matrix relation,
+                                 Vector constant);
     /// An empty constraint (no DoFs) waiting for its condition to fill it.
     explicit ContactMasterSlaveConstraint(IndexType id);
 

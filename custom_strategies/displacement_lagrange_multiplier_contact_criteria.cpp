@@ -157,7 +157,8 @@ bool DisplacementLagrangeMultiplierContactCriteria::PostCriteria(ModelPart& rMod
         mConverged[b] = mRatio[b] <= relative[b] || mAbsolute[b] < absolute[b];
     }
     // The multiplier blocks are not judged while nothing is in contact (their unknowns are zero by construction).
-    if (active == 0 && !mTolerances.ensure_contact) mConverged[LM_NORMAL] = mConverged[LM_STICK] = mConverged[LM_SLIP] = true;
+    if (active == 0 && !mTolerances.ensure_contact)
+        mConverged[LM_NORMAL] = mConverged[LM_STICK] = mConverged[LM_SLIP] = true;
     // Tangential blocks small compared with the normal one are converged too.
     for (const int b : {LM_STICK, LM_SLIP})
         if (!mConverged[b] && mAbsolute[LM_NORMAL] > kEps &&
@@ -181,9 +182,9 @@ std::string DisplacementLagrangeMultiplierContactCriteria::LastNorms() const {
 std::string DisplacementLagrangeMultiplierContactCriteria::Info() const {
     const bool disp_residual = mDisplacementMeasure == ContactBlockMeasure::RESIDUAL;
     const bool lm_residual = mLMMeasure == ContactBlockMeasure::RESIDUAL;
-    std::string name = disp_residual && lm_residual   ? "contact_residual_criterion"
-                       : disp_residual                ? "contact_mixed_criterion"
-                                                      : "contact_displacement_criterion";
+    std::string name = disp_residual && lm_residual ? "contact_residual_criterion"
+                       : disp_residual              ? "contact_mixed_criterion"
+                                                    : "contact_displacement_criterion";
     return mTolerances.split_frictional ? name + " (frictional)" : name;
 }
 

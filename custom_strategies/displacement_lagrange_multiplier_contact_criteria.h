@@ -47,7 +47,8 @@ public:
                                 const SystemVectorType& rDx, const SystemVectorType& rB,
                                 const BuilderAndSolver& rBuilder) override;
     bool PostCriteria(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
-                      const SystemVectorType& rDx, const SystemVectorType& rB, const BuilderAndSolver& rBuilder) override;
+                      const SystemVectorType& rDx, const SystemVectorType& rB,
+                      const BuilderAndSolver& rBuilder) override;
     bool GetActualizeRHSflag() const override;
     std::string LastNorms() const override;
     std::string Info() const override;

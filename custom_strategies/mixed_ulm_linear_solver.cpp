@@ -29,9 +29,13 @@ MixedULMLinearSolver::MixedULMLinearSolver(LinearSolver::Pointer inner) : mInner
     CONTACT_CHECK(mInner != nullptr, InternalError, "mixed_ulm_linear_solver created without an inner solver");
 }
 
-void MixedULMLinearSolver::Clear() { mInner->Clear(); }
+void MixedULMLinearSolver::Clear() {
+    mInner->Clear();
+}
 
-std::string MixedULMLinearSolver::Info() const { return "mixed_ulm_linear_solver(" + mInner->Info() + ")"; }
+std::string MixedULMLinearSolver::Info() const {
+    return "mixed_ulm_linear_solver(" + mInner->Info() + ")";
+}
 
 void MixedULMLinearSolver::ProvideAdditionalData(const std::vector<Dof*>& rDofSet, ModelPart&) {
     mPairs.clear();

@@ -39,16 +39,36 @@ Array3 OrthogonalUnit(const Array3& n) {
 const char* FamilyName(BaseMortarConvergenceCriteria::Family family) {
     using F = BaseMortarConvergenceCriteria::Family;
     switch (family) {
-        case F::ALM_FRICTIONLESS: return "ALMFrictionlessMortarConvergenceCriteria";
-        case F::ALM_FRICTIONLESS_COMPONENTS: return "ALMFrictionlessComponentsMortarConvergenceCriteria";
-        case F::ALM_FRICTIONAL: return "ALMFrictionalMortarConvergenceCriteria";
-        case F::PENALTY_FRICTIONLESS: return "PenaltyFrictionlessMortarConvergenceCriteria";
-        case F::PENALTY_FRICTIONAL: return "PenaltyFrictionalMortarConvergenceCriteria";
-        default: return "MeshTyingMortarConvergenceCriteria";
+        case F::ALM_FRICTIONLESS:
+            return "ALMFrictionlessMortarConvergenceCriteria";
+        case F::ALM_FRICTIONLESS_COMPONENTS:
+            return "ALMFrictionlessComponentsMortarConvergenceCriteria";
+        case F::ALM_FRICTIONAL:
+            return "ALMFrictionalMortarConvergenceCriteria";
+        case F::PENALTY_FRICTIONLESS:
+            return "PenaltyFrictionlessMortarConvergenceCriteria";
+        case F::PENALTY_FRICTIONAL:
+            return "PenaltyFrictionalMortarConvergenceCriteria";
+        default:
+            return "MeshTyingMortarConvergenceCriteria";
     }
 }
 
 }  // namespace
+
+void UpdateContactNormals(ModelPart& rModelPart) {
+    ModelPart* contact = FindPart(rModelPart, "Contact");
+    if (contact == nullptr) return;
+    ComputeNodesMeanNormalModelPart(*contact, true);
+    ModelPart* computing = FindPart(rModelPart, "ComputingContact");
+    if (computing == nullptr) return;
+    for (const auto& condition : computing->Conditions()) {
+        auto* pair = dynamic_cast<PairedCondition*>(condition.get());
+        if (pair == nullptr || !pair->HasPairedGeometry()) continue;
+        pair->SetValue(NORMAL, pair->GetParentGeometry().UnitNormal(Array3::Zero()));
+        pair->SetPairedNormal(pair->GetPairedGeometry().UnitNormal(Array3::Zero()));
+    }
+}
 
 BaseMortarConvergenceCriteria::BaseMortarConvergenceCriteria(Family family, bool pure_slip)
     : mFamily(family), mPureSlip(pure_slip) {}
@@ -57,15 +77,7 @@ void BaseMortarConvergenceCriteria::UpdateNormalsAndTangents(ModelPart& rModelPa
     if (mFamily == Family::MESH_TYING) return;
     ModelPart* contact = FindPart(rModelPart, "Contact");
     if (contact == nullptr) return;
-    ComputeNodesMeanNormalModelPart(*contact, true);
-    if (ModelPart* computing = FindPart(rModelPart, "ComputingContact")) {
-        for (const auto& condition : computing->Conditions()) {
-            auto* pair = dynamic_cast<PairedCondition*>(condition.get());
-            if (pair == nullptr || !pair->HasPairedGeometry()) continue;
-            pair->SetValue(NORMAL, pair->GetParentGeometry().UnitNormal(Array3::Zero()));
-            pair->SetPairedNormal(pair->GetPairedGeometry().UnitNormal(Array3::Zero()));
-        }
-    }
+    UpdateContactNormals(rModelPart);
     if (!IsFrictional()) return;
     // Slip direction (held constant by the tangent): ALM from the tangential multiplier, penalty / pure slip from
     // the weighted slip; the orthogonal fallback otherwise.
@@ -138,7 +150,9 @@ bool BaseMortarConvergenceCriteria::PostCriteria(ModelPart& rModelPart, DofsArra
     // The set utilities look for "Contact" under the model part they get and honour its INTERACTION flag.
     ModelPart& owner = contact->GetParentModelPart();
     switch (mFamily) {
-        case Family::ALM_FRICTIONLESS: mActiveFlips = ActiveSetUtilities::ComputeALMFrictionlessActiveSet(owner); break;
+        case Family::ALM_FRICTIONLESS:
+            mActiveFlips = ActiveSetUtilities::ComputeALMFrictionlessActiveSet(owner);
+            break;
         case Family::ALM_FRICTIONLESS_COMPONENTS:
             mActiveFlips = ActiveSetUtilities::ComputeALMFrictionlessComponentsActiveSet(owner);
             break;
@@ -157,7 +171,8 @@ bool BaseMortarConvergenceCriteria::PostCriteria(ModelPart& rModelPart, DofsArra
             mSlipFlips = flips[1];
             break;
         }
-        default: break;
+        default:
+            break;
     }
     CountSets(rModelPart);
     info.SetValue(ACTIVE_SET_CONVERGED, mActiveFlips == 0);
@@ -172,6 +187,8 @@ std::string BaseMortarConvergenceCriteria::LastNorms() const {
     return out.str();
 }
 
-std::string BaseMortarConvergenceCriteria::Info() const { return FamilyName(mFamily); }
+std::string BaseMortarConvergenceCriteria::Info() const {
+    return FamilyName(mFamily);
+}
 
 }  // namespace contact_app

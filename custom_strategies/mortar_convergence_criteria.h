@@ -7,6 +7,10 @@
 
 namespace contact_app {
 
+/// Mean nodal normals of the "Contact" part under the root of @p rModelPart (current configuration) and the slave /
+/// master normals of every pair in "ComputingContact". No-op without a "Contact" part.
+void UpdateContactNormals(ModelPart& rModelPart);
+
 /// The active-set (and stick/slip) convergence of a mortar contact formulation (Kratos
 /// BaseMortarConvergenceCriteria and its family criteria, kratos_cpp_internals.md §9, kratos_residuals.md §6).
 /// It is combined with the user's criterion by AND: a step converges when the unknowns do and the sets stop
@@ -40,7 +44,8 @@ public:
     bool PreCriteria(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
                      const SystemVectorType& rDx, const SystemVectorType& rB) override;
     bool PostCriteria(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
-                      const SystemVectorType& rDx, const SystemVectorType& rB, const BuilderAndSolver& rBuilder) override;
+                      const SystemVectorType& rDx, const SystemVectorType& rB,
+                      const BuilderAndSolver& rBuilder) override;
     std::string LastNorms() const override;
     std::string Info() const override;
 

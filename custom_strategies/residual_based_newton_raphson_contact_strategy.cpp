@@ -3,6 +3,7 @@
 
 #include "contact_app/application.h"
 #include "contact_app/kernel/exceptions.h"
+#include "custom_strategies/mortar_convergence_criteria.h"
 #include "custom_utilities/contact_utilities.h"
 
 namespace contact_app {
@@ -32,6 +33,8 @@ void ResidualBasedNewtonRaphsonContactStrategy::ComputeExplicitContributions() {
 
 void ResidualBasedNewtonRaphsonContactStrategy::Predict() {
     NewtonRaphsonStrategy::Predict();
+    // The prediction moved the mesh (prescribed displacements, dynamics): normals and gaps of the predicted state.
+    if (mSettings.move_mesh_flag) UpdateContactNormals(mModelPart);
     ComputeExplicitContributions();
 }
 

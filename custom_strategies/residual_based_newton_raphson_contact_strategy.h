@@ -13,8 +13,9 @@ struct ContactStrategySettings {
 
 /// Newton–Raphson for mortar contact (Kratos ResidualBasedNewtonRaphsonContactStrategy,
 /// kratos_cpp_internals.md §8.1, data flow §12).
-/// - Predict: the scheme's prediction, then the weighted gaps (and slips) of the pairs in "ComputingContact"
-///   are recomputed at the predicted configuration (the active-set criteria and the first build need them).
+/// - Predict: the scheme's prediction, then the contact normals and the weighted gaps (and slips) of the pairs in
+///   "ComputingContact" are recomputed at the predicted configuration (the first build and the active-set criteria
+///   use them; with prescribed displacements the predicted configuration is already the deformed one).
 /// - SolveSolutionStep: with the model part flagged INTERACTION (the default, full semi-smooth Newton) one Newton
 ///   loop in which the mortar criterion updates the active set at every iteration; otherwise (simplified
 ///   semi-smooth Newton) up to inner_loop_iterations Newton loops, the set being updated only at the first

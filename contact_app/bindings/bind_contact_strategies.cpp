@@ -37,11 +37,14 @@ void BindContactStrategies(py::module_& m) {
         "Block convergence (displacement / multiplier, optionally normal / stick / slip) of a mortar contact system.");
     lm.def(py::init<ContactBlockMeasure, ContactBlockMeasure, ContactCriteriaTolerances>(),
            py::arg("displacement_measure"), py::arg("lm_measure"), py::arg("tolerances"))
-        .def("LastRatio", [](const LMCriteria& self, int block) { return self.LastRatio(static_cast<LMCriteria::Block>(block)); },
-             py::arg("block"), "Ratio of block 0 disp, 1 lm (normal), 2 stick, 3 slip.")
-        .def("LastAbsolute",
-             [](const LMCriteria& self, int block) { return self.LastAbsolute(static_cast<LMCriteria::Block>(block)); },
-             py::arg("block"), "Absolute norm of block 0 disp, 1 lm (normal), 2 stick, 3 slip.");
+        .def(
+            "LastRatio",
+            [](const LMCriteria& self, int block) { return self.LastRatio(static_cast<LMCriteria::Block>(block)); },
+            py::arg("block"), "Ratio of block 0 disp, 1 lm (normal), 2 stick, 3 slip.")
+        .def(
+            "LastAbsolute",
+            [](const LMCriteria& self, int block) { return self.LastAbsolute(static_cast<LMCriteria::Block>(block)); },
+            py::arg("block"), "Absolute norm of block 0 disp, 1 lm (normal), 2 stick, 3 slip.");
 
     using Mortar = BaseMortarConvergenceCriteria;
     py::class_<Mortar, ConvergenceCriteria, std::shared_ptr<Mortar>> mortar(

@@ -28,8 +28,8 @@ struct OneNode {
         part->AddNodalSolutionStepVariable(NORMAL);
         part->AddNodalSolutionStepVariable(VECTOR_LAGRANGE_MULTIPLIER);
         node = part->CreateNewNode(1, 0.0, 0.0, 0.0).get();
-        for (const auto* v : {&DISPLACEMENT_X, &DISPLACEMENT_Y, &VECTOR_LAGRANGE_MULTIPLIER_X,
-                              &VECTOR_LAGRANGE_MULTIPLIER_Y})
+        for (const auto* v :
+             {&DISPLACEMENT_X, &DISPLACEMENT_Y, &VECTOR_LAGRANGE_MULTIPLIER_X, &VECTOR_LAGRANGE_MULTIPLIER_Y})
             dofs.push_back(&node->AddDof(*v));
         for (std::size_t i = 0; i < dofs.size(); ++i) dofs[i]->SetEquationId(i);
         node->FastGetSolutionStepValue(NORMAL) = Array3(0.0, 1.0, 0.0);
@@ -51,8 +51,8 @@ TEST(DisplacementLagrangeMultiplierContactCriteria, IncrementBlocksAreJudgedSepa
     SystemVectorType dx(4), b = SystemVectorType::Zero(4);
     dx << 1e-6, 0.0, 0.0, 0.5;  // displacement converged (ratio ~7e-7), multiplier not (ratio 0.25)
     EXPECT_FALSE(criteria.PostCriteria(*s.part, s.dofs, s.A, dx, b, s.builder));
-    EXPECT_NEAR(criteria.LastRatio(DisplacementLagrangeMultiplierContactCriteria::DISPLACEMENT),
-                1e-6 / std::sqrt(2.0), 1e-15);
+    EXPECT_NEAR(criteria.LastRatio(DisplacementLagrangeMultiplierContactCriteria::DISPLACEMENT), 1e-6 / std::sqrt(2.0),
+                1e-15);
     EXPECT_NEAR(criteria.LastRatio(DisplacementLagrangeMultiplierContactCriteria::LM_NORMAL), 0.25, 1e-15);
     EXPECT_TRUE(criteria.BlockConverged(DisplacementLagrangeMultiplierContactCriteria::DISPLACEMENT));
     dx[3] = 1e-6;
@@ -70,8 +70,8 @@ TEST(DisplacementLagrangeMultiplierContactCriteria, MultipliersAreNotJudgedWitho
     EXPECT_TRUE(lax.PostCriteria(*s.part, s.dofs, s.A, dx, b, s.builder));
     ContactCriteriaTolerances strict;
     strict.ensure_contact = true;
-    DisplacementLagrangeMultiplierContactCriteria ensure(ContactBlockMeasure::INCREMENT,
-                                                         ContactBlockMeasure::INCREMENT, strict);
+    DisplacementLagrangeMultiplierContactCriteria ensure(ContactBlockMeasure::INCREMENT, ContactBlockMeasure::INCREMENT,
+                                                         strict);
     EXPECT_THROW(ensure.PostCriteria(*s.part, s.dofs, s.A, dx, b, s.builder), ConvergenceError);
 }
 

@@ -29,8 +29,8 @@ struct SaddleSystem {
         part->AddNodalSolutionStepVariable(VECTOR_LAGRANGE_MULTIPLIER);
         for (int id = 1; id <= 4; ++id) {
             auto node = part->CreateNewNode(id, id, 0.0, 0.0);
-            for (const auto* v : {&DISPLACEMENT_X, &DISPLACEMENT_Y, &VECTOR_LAGRANGE_MULTIPLIER_X,
-                                  &VECTOR_LAGRANGE_MULTIPLIER_Y})
+            for (const auto* v :
+                 {&DISPLACEMENT_X, &DISPLACEMENT_Y, &VECTOR_LAGRANGE_MULTIPLIER_X, &VECTOR_LAGRANGE_MULTIPLIER_Y})
                 dofs.push_back(&node->AddDof(*v));
         }
         part->GetNode(1).Set(SLAVE, true);

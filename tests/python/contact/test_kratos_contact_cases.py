@@ -1,9 +1,11 @@
 """The reference contact cases of ../shared/kratos_cases, run from their unchanged parameters.
 
-Each case runs through ``ca.analysis.run`` (the same path as ``contact-app run``) and must pass its
-own ``from_json_check_result_process`` (absolute tolerance 1e-3). Because that tolerance is loose
-for these small displacements, every checked column is compared again with a relative tolerance
-of 1e-4 (an absolute floor of 1e-6 × the column's largest reference value keeps zeros meaningful);
+Each case runs through the analysis (the same path as ``contact-app run``) and must pass its
+own ``from_json_check_result_process`` against the 2019 result files (absolute tolerance 1e-3).
+Because that tolerance is loose for these small displacements, and because the current Kratos no
+longer reproduces some 2019 files itself, every checked value is also compared with what the
+current Kratos computes (fixtures made by scripts/oracle/generate_kratos_fixtures.py) with a
+relative tolerance of 1e-4 (floor 1e-6 × the variable's largest value keeps zeros meaningful);
 the worst relative error per case is printed (``pytest -s``) and recorded as a test property.
 The ALM frictionless cases are re-run as FrictionlessComponents, as the reference suite does.
 """
@@ -22,6 +24,8 @@ from contact_app.parameters import Parameters
 from contact_app.processes.from_json_check_result_process import FromJsonCheckResultProcess
 
 CASES_DIR = Path(__file__).resolve().parents[3].parent / "shared" / "kratos_cases"
+#: What the current Kratos computes for each case (scripts/oracle/generate_kratos_fixtures.py).
+ORACLE_DIR = Path(__file__).resolve().parent / "data" / "kratos_oracle"
 
 CASES = {
     "alm_frictionless_2d_hyper_simple": "ALM_frictionless_contact_test_2D/hyper_simple_patch_test",
@@ -39,19 +43,26 @@ CASES = {
 }
 COMPONENTS = [name for name in CASES if name.startswith("alm_frictionless")]
 
-#: Cases that do not (yet) agree with the reference, with the difference measured on 2026-11-21.
-#: xfail(strict=True): a case that starts to agree fails the suite, so this list cannot go stale.
-KNOWN_DIFFERENCES = {
-    "alm_frictionless_2d_taylor": "passes its own check; strict: DISPLACEMENT_Y 0.7 % low on the "
-    "punch (uniform), DISPLACEMENT_X 23 % at node 4 (|u| ~1e-5)",
+#: Cases whose 2019 result files we do not match, with the difference measured on 2026-11-21.
+#: xfail(strict=True): a case that starts to agree fails the suite, so these lists cannot go stale.
+DIFFERENT_FROM_2019 = {
     "alm_frictionless_3d_slope": "displacements exact; AUGMENTED_NORMAL_CONTACT_PRESSURE 0.33 % "
-    "above the reference (1.00333e9 vs 1.00005e9), outside the case's tolerance",
-    "alm_frictional_2d_hyper_simple": "passes its own check; strict: DISPLACEMENT_X 11 %",
-    "penalty_frictionless_2d": "passes its own check; strict: 1.0e-3 relative",
-    "penalty_frictional_2d_stick": "the slave nodes stick to the master (reference: they stay at "
-    "x = 0 while the master slides 5.2e-3); the reference spreads the friction force with "
-    "D - D_old (B2), which vanishes for small sliding",
-    "mesh_tying_2d": "passes its own check; strict: DISPLACEMENT_X 1.35 %",
+    "above the 2019 file (1.00333e9 vs 1.00005e9; the current Kratos gives 1.00005e9 too)",
+    "penalty_frictional_2d_stick": "our slave nodes stick to the master; the 2019 file and the "
+    "current Kratos keep them at x = 0 while the master slides 5.2e-3 (their friction force is "
+    "spread with D - D_old, B2, and vanishes for small sliding; we spread it with D, M)",
+    "mpc_2d_matching": "the MPC contact solver (mpc_contact_settings) is not implemented yet",
+}
+DIFFERENT_FROM_ORACLE = {
+    "alm_frictionless_2d_taylor": "DISPLACEMENT_X 4.3e-4 relative at node 4 (|u_x| = 1e-5, the "
+    "field reaches 4.5e-2); DISPLACEMENT_Y agrees to 1.6e-6",
+    "alm_frictionless_3d_slope": "displacements agree to 3e-14; AUGMENTED_NORMAL_CONTACT_PRESSURE "
+    "3.3e-3 high: Kratos' final nodal normal is the deformed one (0.4055, -0.4055, -0.8192), ours "
+    "the step-start one (1, -1, -2)/sqrt(6) (normal_variation is off in this case)",
+    "alm_frictional_2d_hyper_simple": "DISPLACEMENT_X 4.4e-4, DISPLACEMENT_Y 8.1e-5 relative "
+    "(slip; independent of tangent_factor); attributed to the B1 fix (true step increment in the "
+    "non-objective slip), not confirmed",
+    "penalty_frictional_2d_stick": "slave DISPLACEMENT_X +-2.79e-3 vs 0: see the 2019 list (B2)",
     "mpc_2d_matching": "the MPC contact solver (mpc_contact_settings) is not implemented yet",
 }
 
@@ -75,61 +86,73 @@ def _check_processes(
     return [p for p in analysis._GetListOfProcesses() if isinstance(p, FromJsonCheckResultProcess)]
 
 
-def _strict_relative_errors(analysis, parameters: Parameters) -> dict[str, float]:
-    """Worst relative error per checked column at the last reference time (floor 1e-6 × max)."""
-    worst: dict[str, float] = {}
-    for block in parameters["processes"]["json_check_process"]:
-        settings = block["Parameters"]
-        part = analysis.model.GetModelPart(settings["model_part_name"].GetString())
-        historical = not settings.Has("historical_value") or settings["historical_value"].GetBool()
-        path = CASES_DIR / settings["input_file_name"].GetString()
-        data = json.loads(path.read_text())
-        for name in settings["check_variables"].GetStringArray():
+def _oracle_relative_errors(analysis, label: str) -> dict[str, float]:
+    """Worst relative error per variable against the Kratos oracle fixture of the case.
+
+    The floor of the relative measure is 1e-6 × the variable's largest oracle value, so values that
+    are zero up to round-off do not count as large relative errors.
+    """
+    fixture = json.loads((ORACLE_DIR / f"{label}.json").read_text())["values"]
+    main = analysis.model.GetModelPart("Structure")
+    pairs: dict[str, list[tuple[float, float]]] = {}
+    for key, variables in fixture.items():
+        node = main.GetNode(int(key.removeprefix("NODE_")))
+        for name, reference in variables.items():
             variable = ca.get_variable(name)
-            values = {}
-            for node in part.Nodes:
-                key = f"NODE_{node.Id}"
-                if key not in data or name not in data[key]:
-                    continue
-                series = data[key][name]
-                values[node.Id] = (
-                    node.GetSolutionStepValue(variable) if historical else node.GetValue(variable),
-                    series[-1],
-                )
-            if not values:
-                continue
-            scale = max(abs(b) for _, b in values.values())
-            floor = 1.0e-6 * scale if scale > 0.0 else 1.0e-12
-            errors = [abs(a - b) / max(abs(a), abs(b), floor) for a, b in values.values()]
-            worst[name] = max(errors)
+            if name.startswith("AUGMENTED_"):
+                ours = node.GetValue(variable)
+            else:
+                ours = node.GetSolutionStepValue(variable)
+            pairs.setdefault(name, []).append((float(ours), float(reference)))
+    worst: dict[str, float] = {}
+    for name, values in pairs.items():
+        scale = max(abs(b) for _, b in values)
+        floor = 1.0e-6 * scale if scale > 0.0 else 1.0e-12
+        worst[name] = max(abs(a - b) / max(abs(a), abs(b), floor) for a, b in values)
     return worst
 
 
-def _param(name: str, components: bool) -> object:
-    marks = []
-    if name in KNOWN_DIFFERENCES:
-        marks.append(pytest.mark.xfail(strict=True, reason=KNOWN_DIFFERENCES[name]))
-    label = f"{name}_components" if components else name
-    return pytest.param(name, components, marks=marks, id=label)
-
-
-@pytest.mark.kratos_reference
-@pytest.mark.parametrize(
-    ("case", "components"),
-    [_param(name, False) for name in CASES] + [_param(name, True) for name in COMPONENTS],
-)
-def test_reference_case_passes_its_checks(case: str, components: bool, record_property) -> None:
+def _run(case: str, components: bool, checks: bool) -> StructuralMechanicsAnalysis:
     parameters = _parameters(case, components)
+    if not checks:
+        parameters["processes"].AddValue("json_check_process", [])
     path = CASES_DIR / f"{CASES[case]}_parameters.json"
     analysis = StructuralMechanicsAnalysis(
         ca.Model(), parameters, base_dir=path.parent, reporter=Reporter(quiet=True)
     )
     analysis.Run()
-    checks = _check_processes(analysis)
-    assert checks, "the case has no from_json_check_result_process"
-    strict = _strict_relative_errors(analysis, parameters)
-    worst = max(strict.values()) if strict else 0.0
-    label = f"{case} (components)" if components else case
-    print(f"\n{label}: worst relative error {worst:.3e} {strict}")
+    return analysis
+
+
+def _param(name: str, components: bool, known: dict[str, str]) -> object:
+    marks = []
+    label = f"{name}_components" if components else name
+    reason = known.get(label, known.get(name))
+    if reason is not None:
+        marks.append(pytest.mark.xfail(strict=True, reason=reason))
+    return pytest.param(name, components, marks=marks, id=label)
+
+
+def _params(known: dict[str, str]) -> list[object]:
+    return [_param(n, False, known) for n in CASES] + [_param(n, True, known) for n in COMPONENTS]
+
+
+@pytest.mark.kratos_reference
+@pytest.mark.parametrize(("case", "components"), _params(DIFFERENT_FROM_2019))
+def test_reference_case_passes_its_own_checks(case: str, components: bool) -> None:
+    analysis = _run(case, components, checks=True)
+    assert [p for p in analysis._GetListOfProcesses() if isinstance(p, FromJsonCheckResultProcess)]
+
+
+@pytest.mark.kratos_reference
+@pytest.mark.parametrize(("case", "components"), _params(DIFFERENT_FROM_ORACLE))
+def test_reference_case_matches_the_current_kratos(
+    case: str, components: bool, record_property
+) -> None:
+    analysis = _run(case, components, checks=False)
+    label = f"{case}_components" if components else case
+    errors = _oracle_relative_errors(analysis, label)
+    worst = max(errors.values()) if errors else 0.0
+    print(f"\n{label}: worst relative error against Kratos {worst:.3e} {errors}")
     record_property("worst_relative_error", worst)
-    assert worst < 1.0e-4, strict
+    assert worst < 1.0e-4, errors
