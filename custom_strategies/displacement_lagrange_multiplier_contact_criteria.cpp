@@ -117,7 +117,6 @@ void DisplacementLagrangeMultiplierContactCriteria::InitializeSolutionStep(Model
     SystemVectorType zero = SystemVectorType::Zero(rB.size());
     const Sums sums = Accumulate(rDofSet, rDx.size() == rB.size() ? rDx : zero, rB, rBuilder);
     for (int b = 0; b < NUM_BLOCKS; ++b) mInitialResidual[b] = std::sqrt(sums.residual[b]);
-    mInitialResidualSet = true;
 }
 
 bool DisplacementLagrangeMultiplierContactCriteria::PostCriteria(ModelPart& rModelPart, DofsArrayType& rDofSet,
@@ -150,7 +149,10 @@ bool DisplacementLagrangeMultiplierContactCriteria::PostCriteria(ModelPart& rMod
             mAbsolute[b] = dx / n;
         } else {
             const double r = std::sqrt(sums.residual[b]);
-            const double r0 = mInitialResidualSet ? mInitialResidual[b] : 0.0;
+            // A block without residual at the step start (a multiplier block that becomes active in the step) takes
+            // its first non-zero residual as the reference, as the reference criteria do with the first iteration.
+            if (mInitialResidual[b] < kEps && r >= kEps) mInitialResidual[b] = r;
+            const double r0 = mInitialResidual[b];
             mRatio[b] = r0 >= kEps ? r / r0 : (r < kEps ? 0.0 : std::numeric_limits<double>::infinity());
             mAbsolute[b] = r / n;
         }

@@ -34,8 +34,8 @@ struct ContactCriteriaTolerances {
 /// DisplacementLagrangeMultiplier[Residual|Mixed][Frictional]ContactCriteria, kratos_cpp_internals.md §9).
 /// Displacement DoFs are DISPLACEMENT_X/Y/Z (and ROTATION_*); multiplier DoFs LAGRANGE_MULTIPLIER_CONTACT_PRESSURE,
 /// VECTOR_LAGRANGE_MULTIPLIER_X/Y/Z and SCALAR_LAGRANGE_MULTIPLIER; other DoFs count with the displacements. Only free,
-/// unconstrained equations count. The residual measure uses squared norms like the reference (so its tolerances
-/// act on Σr²). The frictional split projects each node's multiplier on its NORMAL: λ_n = (λ·n) n, λ_t = λ − λ_n
+/// unconstrained equations count. Residual ratios are ‖r‖ / ‖r₀‖ with r₀ the step-start residual, or the first
+/// non-zero one for a block that had none (the reference compares squared norms, which squares its tolerances). The frictional split projects each node's multiplier on its NORMAL: λ_n = (λ·n) n, λ_t = λ − λ_n
 /// (the reference uses the component-wise product λ_c n_c, which is not a projection); nodes with μ ≈ 0 count as
 /// normal only.
 class DisplacementLagrangeMultiplierContactCriteria : public ConvergenceCriteria {
@@ -76,7 +76,6 @@ private:
     ContactBlockMeasure mDisplacementMeasure, mLMMeasure;
     ContactCriteriaTolerances mTolerances;
     double mInitialResidual[NUM_BLOCKS] = {0.0, 0.0, 0.0, 0.0};
-    bool mInitialResidualSet = false;
     double mRatio[NUM_BLOCKS] = {0.0, 0.0, 0.0, 0.0};
     double mAbsolute[NUM_BLOCKS] = {0.0, 0.0, 0.0, 0.0};
     bool mConverged[NUM_BLOCKS] = {false, false, false, false};

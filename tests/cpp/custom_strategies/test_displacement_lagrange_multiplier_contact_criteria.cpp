@@ -113,3 +113,26 @@ TEST(DisplacementLagrangeMultiplierContactCriteria, FrictionalSplitProjectsOnThe
 
 }  // namespace
 }  // namespace contact_app::testing
+
+namespace contact_app::testing {
+namespace {
+
+TEST(DisplacementLagrangeMultiplierContactCriteria, BlockWithoutStepStartResidualUsesItsFirstResidual) {
+    OneNode s;
+    s.Values(0.0, 0.0, 0.0, -1.0);
+    DisplacementLagrangeMultiplierContactCriteria criteria(ContactBlockMeasure::RESIDUAL,
+                                                           ContactBlockMeasure::RESIDUAL, {});
+    SystemVectorType dx = SystemVectorType::Zero(4), b(4);
+    b << 1.0, 0.0, 0.0, 0.0;  // the multiplier block has no residual at the step start
+    criteria.InitializeSolutionStep(*s.part, s.dofs, s.A, dx, b, s.builder);
+    b << 1e-3, 0.0, 0.0, 2.0;  // first iteration: the multiplier residual becomes the reference
+    EXPECT_FALSE(criteria.PostCriteria(*s.part, s.dofs, s.A, dx, b, s.builder));
+    using C = DisplacementLagrangeMultiplierContactCriteria;
+    EXPECT_NEAR(criteria.LastRatio(C::LM_NORMAL), 1.0, 1e-15);
+    b << 1e-6, 0.0, 0.0, 1e-5;  // relative 5e-6 of that reference although far above the absolute tolerance
+    EXPECT_TRUE(criteria.PostCriteria(*s.part, s.dofs, s.A, dx, b, s.builder));
+    EXPECT_NEAR(criteria.LastRatio(C::LM_NORMAL), 5e-6, 1e-15);
+}
+
+}  // namespace
+}  // namespace contact_app::testing
