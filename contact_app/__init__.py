@@ -58,6 +58,7 @@ from ._core import (
     Model,
     ModelPart,
     ModelPartIO,
+    MPCContactCriteria,
     MPCContactSearchProcess,
     Node,
     NodesArray,
@@ -73,6 +74,7 @@ from ._core import (
     ResidualBasedLinearStrategy,
     ResidualBasedNewmarkDisplacementScheme,
     ResidualBasedNewtonRaphsonContactStrategy,
+    ResidualBasedNewtonRaphsonMPCContactStrategy,
     ResidualBasedNewtonRaphsonStrategy,
     ResidualCriteria,
     ResolveLinearSolverName,
@@ -185,6 +187,8 @@ __all__ = [
     "DisplacementLagrangeMultiplierContactCriteria",
     "MixedULMLinearSolver",
     "ResidualBasedNewtonRaphsonContactStrategy",
+    "ResidualBasedNewtonRaphsonMPCContactStrategy",
+    "MPCContactCriteria",
 ]
 
 

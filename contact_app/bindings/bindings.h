@@ -25,5 +25,6 @@ void BindContact(py::module_& m);
 void BindContactProcesses(py::module_& m);
 void BindContactSearch(py::module_& m);
 void BindContactStrategies(py::module_& m);
+void BindMPCContact(py::module_& m);
 
 }  // namespace contact_app::bindings

@@ -57,4 +57,5 @@ PYBIND11_MODULE(_core, m) {
     BindContactProcesses(m);
     BindContactSearch(m);
     BindContactStrategies(m);
+    BindMPCContact(m);
 }

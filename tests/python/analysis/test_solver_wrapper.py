@@ -74,9 +74,9 @@ def test_create_solver_reads_the_whole_project_parameters() -> None:
             "mortar_type is empty",
         ),
         (
-            {"solver_type": "Dynamic", "mpc_contact_settings": {}},
-            ca.ConfigurationError,
-            "mpc_contact_structural_mechanics_implicit_dynamic_solver",
+            {"solver_type": "Dynamic", "mpc_contact_settings": {"contact_type": "Frictionles"}},
+            ca.InputError,
+            "Frictionless",
         ),
         (
             {"solver_type": "Static", "time_integration_method": "implicit"},

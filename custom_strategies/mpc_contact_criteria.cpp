@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_strategies/mpc_contact_criteria.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "contact_app/application.h"
+#include "contact_app/kernel/exceptions.h"
+#include "custom_utilities/contact_utilities.h"
+
+namespace contact_app {
+namespace {
+
+/// Default of REACTION_CHECK_STIFFNESS_FACTOR when the ProcessInfo has none (the reference's C++ default).
+constexpr double kDefaultReactionCheckFactor = 1.0e-12;
+/// A gap counts as a penetration below −this × the node's length scale: a gap the constraint has just closed is
+/// zero up to round-off, and its sign must not decide the contact status.
+constexpr double kGapTolerance = 1.0e-10;
+
+ModelPart* FindPart(ModelPart& rModelPart, const char* name) {
+    ModelPart& root = rModelPart.GetRootModelPart();
+    if (root.HasSubModelPart(name)) return &root.GetSubModelPart(name);
+    if (rModelPart.HasSubModelPart(name)) return &rModelPart.GetSubModelPart(name);
+    return nullptr;
+}
+
+/// Largest YOUNG_MODULUS of the elements' properties (0 without one): the scale of the tension tolerance.
+double YoungModulus(const ModelPart& rModelPart) {
+    double young = 0.0;
+    for (const auto& element : rModelPart.GetRootModelPart().Elements())
+        if (element->pGetProperties() && element->GetProperties().Has(YOUNG_MODULUS))
+            young = std::max(young, element->GetProperties().GetValue(YOUNG_MODULUS));
+    return young;
+}
+
+Array3 UnitNormal(const Node& node) {
+    const Array3 n = node.FastGetSolutionStepValue(NORMAL);
+    const double norm = n.norm();
+    return norm > 0.0 ? Array3(n / norm) : n;
+}
+
+/// Every pair of "ComputingContact" is ACTIVE iff one of its slave nodes is; its constraint follows it.
+void SyncPairsAndConstraints(ModelPart& computing) {
+    ContactUtilities::ActivateConditionWithActiveNodes(computing);
+    for (const auto& condition : computing.Conditions()) {
+        if (!condition->Has(CONSTRAINT_POINTER)) continue;
+        if (const auto constraint = condition->GetValue(CONSTRAINT_POINTER))
+            constraint->Set(ACTIVE, condition->Is(ACTIVE));
+    }
+}
+
+}  // namespace
+
+void MPCContactCriteria::ComputeLumpedSlaveArea(ModelPart& rModelPart) {
+    ModelPart* contact = FindPart(rModelPart, "Contact");
+    if (contact == nullptr) return;
+    for (const auto& node : contact->Nodes()) node->SetValue(NODAL_MAUX, 0.0);
+    for (const auto& condition : contact->Conditions()) {
+        if (!condition->Is(SLAVE)) continue;
+        Geometry& face = condition->GetGeometry();
+        const double share = std::abs(face.DomainSize()) / static_cast<double>(face.size());
+        for (std::size_t i = 0; i < face.size(); ++i) face[i].SetValue(NODAL_MAUX, face[i].GetValue(NODAL_MAUX) + share);
+    }
+}
+
+bool MPCContactCriteria::PreCriteria(ModelPart& rModelPart, DofsArrayType&, const SparseMatrixType&,
+                                     const SystemVectorType&, const SystemVectorType&) {
+    ModelPart* contact = FindPart(rModelPart, "Contact");
+    if (contact == nullptr) return true;
+    const ModelPart& root = rModelPart.GetRootModelPart();
+    const bool store_previous = root.HasNodalSolutionStepVariable(WEIGHTED_GAP) && root.GetBufferSize() > 1;
+    bool has_area = true;
+    for (const auto& node : contact->Nodes()) {
+        node->SetValue(CONTACT_FORCE, Array3(Array3::Zero()));
+        if (store_previous) node->FastGetSolutionStepValue(WEIGHTED_GAP, 1) = node->FastGetSolutionStepValue(WEIGHTED_GAP);
+        if (node->Is(SLAVE) && !(node->Has(NODAL_MAUX) && node->GetValue(NODAL_MAUX) > 0.0)) has_area = false;
+    }
+    if (!has_area) ComputeLumpedSlaveArea(rModelPart);
+    if (ModelPart* computing = FindPart(rModelPart, "ComputingContact"))
+        ContactUtilities::ComputeExplicitContributionConditions(*computing);
+    return true;
+}
+
+bool MPCContactCriteria::PostCriteria(ModelPart& rModelPart, DofsArrayType&, const SparseMatrixType&,
+                                      const SystemVectorType&, const SystemVectorType&, const BuilderAndSolver&) {
+    mActiveFlips = mSlipFlips = mActiveNodes = mSlipNodes = 0;
+    ProcessInfo& info = rModelPart.GetProcessInfo();
+    if (!(info.Has(NL_ITERATION_NUMBER) && info.GetValue(NL_ITERATION_NUMBER) > 0)) return true;
+    ModelPart* contact = FindPart(rModelPart, "Contact");
+    CONTACT_CHECK(contact != nullptr, InputError, "MPCContactCriteria: the model part ",
+                  rModelPart.GetRootModelPart().FullName(), " has no \"Contact\" sub model part",
+                  "\n  fix: add mpc_contact_process to processes.contact_process_list");
+    ModelPart* computing = FindPart(rModelPart, "ComputingContact");
+    if (computing != nullptr) ContactUtilities::ComputeExplicitContributionConditions(*computing);
+
+    const double factor = info.Has(REACTION_CHECK_STIFFNESS_FACTOR) ? info.GetValue(REACTION_CHECK_STIFFNESS_FACTOR)
+                                                                    : kDefaultReactionCheckFactor;
+    const double tolerance_pressure = -factor * YoungModulus(rModelPart);
+    const bool frictional = contact->Is(SLIP) || (computing != nullptr && computing->Is(SLIP));
+    for (const auto& node : contact->Nodes()) {
+        if (!node->Is(SLAVE)) continue;
+        if (!(node->Has(NODAL_MAUX) && node->GetValue(NODAL_MAUX) > 0.0)) ComputeLumpedSlaveArea(rModelPart);
+        const double lumped_area = node->GetValue(NODAL_MAUX);
+        CONTACT_CHECK(lumped_area > 0.0, InputError, "MPCContactCriteria: slave node ", node->Id(), " of ",
+                      contact->FullName(), " has a lumped area ", lumped_area,
+                      "\n  expected: > 0 (the node must belong to a SLAVE condition of \"Contact\")",
+                      "\n  fix: check the assume_master_slave setting of the contact process");
+        const bool was_active = node->IsNotDefined(ACTIVE) || node->Is(ACTIVE);
+        // Only a constrained (active) node carries a contact force in its reaction.
+        const Array3 force = was_active ? Array3(node->FastGetSolutionStepValue(REACTION)) : Array3::Zero();
+        const Array3 n = UnitNormal(*node);
+        const double normal_force = force.dot(n);
+        const double pressure = normal_force / lumped_area;
+        const double area = node->Has(NODAL_AREA) && node->GetValue(NODAL_AREA) > 0.0 ? node->GetValue(NODAL_AREA)
+                                                                                      : lumped_area;
+        const double gap = node->FastGetSolutionStepValue(WEIGHTED_GAP) / area;
+        const double nodal_h = ContactUtilities::NodalH(*node);
+        const double length = nodal_h > 0.0 ? nodal_h : std::sqrt(lumped_area);
+        const bool active = pressure < tolerance_pressure || gap < -kGapTolerance * length;
+        if (active != was_active || node->IsNotDefined(ACTIVE)) {
+            if (active != was_active) ++mActiveFlips;
+            node->Set(ACTIVE, active);
+        }
+        const double weight = node->Has(NODAL_PAUX) && node->GetValue(NODAL_PAUX) > 0.0 ? node->GetValue(NODAL_PAUX)
+                                                                                       : 1.0;
+        if (!active) {
+            node->SetValue(CONTACT_FORCE, Array3(Array3::Zero()));
+            if (frictional) node->Set(SLIP, false);
+            continue;
+        }
+        ++mActiveNodes;
+        node->SetValue(NORMAL_CONTACT_STRESS, pressure);
+        if (!frictional) {
+            node->SetValue(CONTACT_FORCE, Array3(normal_force * n / weight));
+            continue;
+        }
+        node->SetValue(CONTACT_FORCE, Array3(force / weight));
+        const double tangential = (force - normal_force * n).norm();
+        const double mu = node->Has(FRICTION_COEFFICIENT) ? node->GetValue(FRICTION_COEFFICIENT) : 0.0;
+        // B9 done right: |F_τ| ≤ −μ F·n compares two forces (equivalently two tractions over the same area).
+        // μ = 0 is frictionless: always slip (the reference's 0 ≤ 0 would stick a node without tangential force).
+        const bool stick = mu > 0.0 && tangential <= -mu * normal_force;
+        const bool was_slip = node->Is(SLIP);
+        if (was_active && was_slip == stick) ++mSlipFlips;
+        node->Set(SLIP, !stick);
+        if (!stick) ++mSlipNodes;
+        node->SetValue(TANGENTIAL_CONTACT_STRESS, stick ? tangential / lumped_area : -mu * pressure);
+    }
+    if (computing != nullptr) SyncPairsAndConstraints(*computing);
+    info.SetValue(ACTIVE_SET_CONVERGED, mActiveFlips == 0);
+    if (frictional) info.SetValue(SLIP_SET_CONVERGED, mSlipFlips == 0);
+    return mActiveFlips == 0 && mSlipFlips == 0;
+}
+
+std::string MPCContactCriteria::LastNorms() const {
+    std::ostringstream out;
+    out << "active " << mActiveNodes << " (" << mActiveFlips << " changed)";
+    if (mSlipNodes > 0 || mSlipFlips > 0) out << ", slip " << mSlipNodes << " (" << mSlipFlips << " changed)";
+    return out.str();
+}
+
+}  // namespace contact_app

@@ -1,0 +1,192 @@
+"""What the MPC contact solvers add to the structural ones (Kratos ``mpc_contact_structural_*``).
+
+``mpc_contact_settings`` defaults and checks (``kratos_python_layer.md`` §6.1), the historical
+variables of the MPC route, the elimination builder (which honours the contact constraints and
+writes the reactions the active-set criterion reads), ``And(structural, MPCContactCriteria)`` and
+the MPC contact Newton strategy (§6.6). Shared by the static and implicit dynamic MPC solvers.
+"""
+
+from __future__ import annotations
+
+import logging
+from typing import Any
+
+import contact_app as ca
+from contact_app.analysis.solvers.convergence_criteria_factory import (
+    ConvergenceCriterion,
+    CreateConvergenceCriterion,
+)
+from contact_app.analysis.validation import error, not_supported
+from contact_app.parameters import Parameters, suggest
+
+logger = logging.getLogger("contact_app.contact")
+
+MPC_CONTACT_TYPES = ("Frictionless", "Frictional", "MeshTying")
+
+MPC_CONTACT_SETTINGS_DEFAULTS: dict[str, Any] = {
+    "contact_type": "Frictionless",
+    "simplified_semi_smooth_newton": False,
+    "inner_loop_iterations": 10,
+    "update_each_nl_iteration": False,
+    "enforce_ntn": False,
+}
+
+
+def mpc_variables(contact_type: str) -> list[Any]:
+    """Historical variables of the MPC route besides the structural ones (§6.3)."""
+    variables = [ca.NORMAL, ca.NODAL_H, ca.WEIGHTED_GAP]
+    if contact_type == "Frictional":
+        variables.append(ca.WEIGHTED_SLIP)
+    return variables
+
+
+class MPCContactSolverMixin:
+    """MPC contact additions to a structural solver (used before the structural base in the MRO)."""
+
+    main_model_part: ca.ModelPart
+    settings: Parameters
+
+    @classmethod
+    def GetDefaultParameters(cls) -> dict[str, Any]:
+        """The structural defaults plus ``mpc_contact_settings``."""
+        defaults = super().GetDefaultParameters()  # type: ignore[misc]
+        defaults["mpc_contact_settings"] = MPC_CONTACT_SETTINGS_DEFAULTS
+        return defaults
+
+    def ValidateSettings(self) -> None:
+        """Structural checks, then ``mpc_contact_settings`` (unknown keys are errors).
+
+        Raises:
+            InputError: unknown key, unknown ``contact_type``, ``inner_loop_iterations`` < 1.
+            ConfigurationError: ``enforce_ntn`` (not implemented, as in Kratos).
+        """
+        mpc = self.settings["mpc_contact_settings"]
+        mpc.RecursivelyValidateAndAssignDefaults(MPC_CONTACT_SETTINGS_DEFAULTS)
+        contact_type = mpc["contact_type"].GetString()
+        if contact_type not in MPC_CONTACT_TYPES:
+            raise error(
+                mpc,
+                "contact_type",
+                f'unknown contact_type "{contact_type}"',
+                "one of " + ", ".join(f'"{t}"' for t in MPC_CONTACT_TYPES),
+                suggest(contact_type, list(MPC_CONTACT_TYPES)),
+            )
+        self.contact_type = contact_type
+        if mpc["inner_loop_iterations"].GetInt() < 1:
+            raise error(mpc, "inner_loop_iterations", "inner_loop_iterations < 1", "≥ 1")
+        if mpc["enforce_ntn"].GetBool():
+            raise not_supported(
+                mpc,
+                "enforce_ntn",
+                "node-to-node enforcement of the MPC contact",
+                'set "enforce_ntn": false (Kratos accepts it but does not implement it either)',
+            )
+        # The criterion reads the contact forces from the reactions; pairs change between steps.
+        for key in ("compute_reactions", "reform_dofs_at_each_step", "clear_storage"):
+            if not self.settings[key].GetBool():
+                logger.info("mpc_contact_settings: %s forced to true", key)
+            self.settings[key].SetBool(True)
+        super().ValidateSettings()  # type: ignore[misc]
+
+    def AddVariables(self) -> None:
+        """Structural variables plus NORMAL, NODAL_H, WEIGHTED_GAP (+ WEIGHTED_SLIP, frictional)."""
+        super().AddVariables()  # type: ignore[misc]
+        for variable in mpc_variables(self.contact_type):
+            self.main_model_part.AddNodalSolutionStepVariable(variable)
+
+    def _CreateBuilderAndSolver(self) -> Any:
+        """The elimination builder: it applies the constraints and writes the slaves' reactions."""
+        kind = self.settings["builder_and_solver_settings"]["type"].GetString()
+        if kind != "elimination":
+            logger.info(
+                'mpc_contact_settings: builder_and_solver_settings.type "%s" replaced by the '
+                "elimination builder with constraints (the MPC route needs it)",
+                kind,
+            )
+        return ca.ResidualBasedEliminationBuilderAndSolver(self._GetLinearSolver())  # type: ignore[attr-defined]
+
+    def _CreateConvergenceCriterion(self) -> ConvergenceCriterion:
+        """And(structural criterion, MPCContactCriteria)."""
+        base = CreateConvergenceCriterion(self.settings)
+        self._mpc_criteria = ca.MPCContactCriteria()
+        combined = ca.AndCriteria(base.criterion, self._mpc_criteria)
+        combined.SetEchoLevel(self.settings["echo_level"].GetInt())
+        return ConvergenceCriterion(
+            combined, residual=base.residual, displacement=base.displacement
+        )
+
+    def _CreateSolutionStrategy(self) -> Any:
+        settings = self.settings
+        if settings["analysis_type"].GetString() == "linear":
+            raise not_supported(
+                settings,
+                "analysis_type",
+                'the MPC contact solver with "analysis_type": "linear"',
+                'use "non_linear" (the active set needs the Newton loop)',
+            )
+        kind = settings["solving_strategy_settings"]["type"].GetString()
+        if kind != "newton_raphson":
+            raise not_supported(
+                settings["solving_strategy_settings"],
+                "type",
+                f'the MPC contact strategy "{kind}"',
+                'use "newton_raphson"',
+            )
+        mpc = settings["mpc_contact_settings"]
+        return ca.ResidualBasedNewtonRaphsonMPCContactStrategy(
+            self.GetComputingModelPart(),  # type: ignore[attr-defined]
+            self._GetScheme(),  # type: ignore[attr-defined]
+            self._GetConvergenceCriterion().criterion,  # type: ignore[attr-defined]
+            self._GetBuilderAndSolver(),  # type: ignore[attr-defined]
+            max_iteration=settings["max_iteration"].GetInt(),
+            compute_reactions=True,
+            reform_step_dofs=True,
+            move_mesh_flag=settings["move_mesh_flag"].GetBool(),
+            inner_loop_iterations=mpc["inner_loop_iterations"].GetInt(),
+            update_each_nl_iteration=mpc["update_each_nl_iteration"].GetBool(),
+            enforce_ntn=mpc["enforce_ntn"].GetBool(),
+        )
+
+    def Initialize(self) -> None:
+        """Structural initialisation; ProcessInfo INTERACTION = simplified_semi_smooth_newton.
+
+        Raises:
+            InputError: no MPC contact process created the "Contact" part.
+        """
+        if not self.main_model_part.HasSubModelPart("Contact"):
+            raise ca.InputError(
+                f'the MPC contact solver found no "Contact" sub model part in '
+                f'"{self.main_model_part.Name}"\n'
+                f"  where:    {self.settings.Where('mpc_contact_settings')}\n"
+                "  expected: mpc_contact_process in processes.contact_process_list\n"
+                "  fix:      add the process, or remove mpc_contact_settings (structural run)"
+            )
+        simplified = self.settings["mpc_contact_settings"]["simplified_semi_smooth_newton"]
+        # The MPC route uses the opposite convention of the mortar solvers: INTERACTION on the
+        # ProcessInfo selects the outer active-set loop (kratos_python_layer.md §6.6).
+        self.main_model_part.ProcessInfo.Set(ca.INTERACTION, simplified.GetBool())
+        super().Initialize()  # type: ignore[misc]
+
+    def ContactStatus(self) -> tuple[int, int, int, float]:
+        """(active slave nodes, slipping ones, live pairs, max penetration) for the step table."""
+        main = self.main_model_part
+        if not main.HasSubModelPart("Contact"):
+            return (0, 0, 0, 0.0)
+        contact = main.GetSubModelPart("Contact")
+        frictional = self.contact_type == "Frictional"
+        active = slip = 0
+        penetration = 0.0
+        for node in contact.Nodes:
+            if not (node.Is(ca.SLAVE) and node.Is(ca.ACTIVE)):
+                continue
+            active += 1
+            slip += int(frictional and node.Is(ca.SLIP))
+            area = node.GetValue(ca.NODAL_MAUX) if node.Has(ca.NODAL_MAUX) else 0.0
+            if area > 0.0:
+                penetration = max(penetration, -node.GetSolutionStepValue(ca.WEIGHTED_GAP) / area)
+        pairs = 0
+        if main.HasSubModelPart("ComputingContact"):
+            for condition in main.GetSubModelPart("ComputingContact").Conditions:
+                if condition.Is(ca.ACTIVE) and not condition.Is(ca.ISOLATED):
+                    pairs += 1
+        return (active, slip, pairs, penetration)
