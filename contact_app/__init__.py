@@ -48,6 +48,7 @@ from ._core import (
     InterfacePreprocessCondition,
     InternalError,
     LinearSolver,
+    LineSearchContactStrategy,
     LineSearchStrategy,
     MasterSlaveConstraint,
     MasterSlaveConstraintsArray,
@@ -187,6 +188,7 @@ __all__ = [
     "DisplacementLagrangeMultiplierContactCriteria",
     "MixedULMLinearSolver",
     "ResidualBasedNewtonRaphsonContactStrategy",
+    "LineSearchContactStrategy",
     "ResidualBasedNewtonRaphsonMPCContactStrategy",
     "MPCContactCriteria",
 ]

@@ -198,6 +198,8 @@ void ContactSearchProcess::ClearMortarConditions() {
 }
 
 void ContactSearchProcess::ResetContactOperators() {
+    // Pairs without an active slave node (in the set the last step converged to) are the ones to erase.
+    UpdatePairActivity();
     ModelPart& root = mrMainModelPart.GetRootModelPart();
     std::vector<Condition*> erased;
     if (mrMainModelPart.Is(MODIFIED)) {
@@ -250,7 +252,9 @@ void ContactSearchProcess::UpdateMortarConditions() {
         CreatePairConditions();
         ComputeWeightedReaction();
     }
-    UpdatePairActivity();
+    // Every pair the search keeps is assembled during the step: the active set changes inside the Newton loop, and
+    // a pair switched off here would miss the contribution of a slave node that becomes active later.
+    for (const auto& pair : mpComputingPart->Conditions()) pair->Set(ACTIVE, true);
     mTimings.total = Seconds(start);
 }
 
@@ -602,7 +606,8 @@ void ContactSearchProcess::ComputeActiveInactiveNodes() {
 }
 
 void ContactSearchProcess::UpdatePairActivity() {
-    // A pair stays alive while one of its slave nodes is in the active set (ResetContactOperators erases the rest).
+    // A pair survives the next clear while one of its slave nodes is in the active set (ResetContactOperators erases
+    // the rest; the search recreates them if they are candidates again).
     for (const auto& pair : mpComputingPart->Conditions()) {
         const auto* paired = dynamic_cast<const PairedCondition*>(pair.get());
         if (paired == nullptr) continue;

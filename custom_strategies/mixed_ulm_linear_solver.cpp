@@ -73,14 +73,16 @@ void MixedULMLinearSolver::Solve(SparseMatrixType& rA, SystemVectorType& rX, Sys
         multiplier_of_row[row] = lambda;
         is_condensed[lambda] = 1;
     }
-    // K_SE must be diagonal (dual basis): a paired row may couple to its own multiplier only.
+    // K_SE must be diagonal (dual basis): a paired row may couple to its own multiplier only, other couplings being
+    // round-off of the dual basis (|K| ≤ 1e-10 |K_diag|, dropped).
     std::vector<double> diagonal(n, 0.0);
+    for (const auto& [lambda, row] : mPairs) diagonal[row] = rA.coeff(row, lambda);
+    constexpr double kRoundOff = 1.0e-10;
     for (int col = 0; col < rA.outerSize(); ++col)
         for (SparseMatrixType::InnerIterator it(rA, col); it; ++it) {
             const int row = static_cast<int>(it.row());
-            if (multiplier_of_row[row] < 0 || !is_condensed[col] || it.value() == 0.0) continue;
-            if (col != multiplier_of_row[row]) return mInner->Solve(rA, rX, rB);
-            diagonal[row] = it.value();
+            if (multiplier_of_row[row] < 0 || !is_condensed[col] || col == multiplier_of_row[row]) continue;
+            if (std::abs(it.value()) > kRoundOff * std::abs(diagonal[row])) return mInner->Solve(rA, rX, rB);
         }
     for (const auto& [lambda, row] : mPairs)
         if (std::abs(diagonal[row]) < 1e-300) return mInner->Solve(rA, rX, rB);

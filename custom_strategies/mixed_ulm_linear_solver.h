@@ -18,9 +18,10 @@ namespace contact_app {
 ///   (K_R,R − K_R,E K_SE⁻¹ K_S,R) Δu_R = r_R − K_R,E K_SE⁻¹ r_S,
 /// solved with the inner solver; λ_E is recovered afterwards. This is the reference's reduction written over the
 /// general row/unknown split (the reference's N | M | SI | SA blocks are its special case).
-/// Unlike the reference, the condensation is only used when it is exact: if a paired row couples to more than one
-/// condensed multiplier (standard instead of dual basis), or no data were provided (systems with master–slave
-/// constraints), the full system goes to the inner solver unchanged (reported by LastSolveWasCondensed()).
+/// Unlike the reference, the condensation is only used when it is exact: if a paired row couples to another
+/// condensed multiplier beyond round-off (|K| > 1e-10 of its own coupling: a standard instead of a dual basis), or
+/// no data were provided (systems with master–slave constraints), the full system goes to the inner solver
+/// unchanged (reported by LastSolveWasCondensed()).
 class MixedULMLinearSolver : public LinearSolver {
 public:
     /// @param inner solver of the reduced (displacement-sized) system (not null)

@@ -4,6 +4,7 @@
 
 #include "contact_app/bindings/bindings.h"
 #include "custom_strategies/displacement_lagrange_multiplier_contact_criteria.h"
+#include "custom_strategies/line_search_contact_strategy.h"
 #include "custom_strategies/mixed_ulm_linear_solver.h"
 #include "custom_strategies/mortar_convergence_criteria.h"
 #include "custom_strategies/residual_based_newton_raphson_contact_strategy.h"
@@ -90,6 +91,29 @@ void BindContactStrategies(py::module_& m) {
              py::arg("max_iteration") = 30, py::arg("compute_reactions") = true, py::arg("reform_step_dofs") = true,
              py::arg("move_mesh_flag") = true, py::arg("inner_loop_iterations") = 5, py::keep_alive<1, 2>())
         .def("GetInnerLoopIterations", &ResidualBasedNewtonRaphsonContactStrategy::GetInnerLoopIterations);
+
+    py::class_<LineSearchContactStrategy, ResidualBasedNewtonRaphsonContactStrategy,
+               std::shared_ptr<LineSearchContactStrategy>>(
+        m, "LineSearchContactStrategy",
+        "The contact Newton strategy with a line search per block (displacements, multipliers).")
+        .def(py::init([](ModelPart& part, Scheme::Pointer scheme, ConvergenceCriteria::Pointer criteria,
+                         BuilderAndSolver::Pointer builder, int max_iteration, bool compute_reactions,
+                         bool reform_step_dofs, bool move_mesh_flag, int inner_loop_iterations, double min_alpha) {
+                 StrategySettings settings;
+                 settings.compute_reactions = compute_reactions;
+                 settings.reform_dofs_at_each_step = reform_step_dofs;
+                 settings.move_mesh_flag = move_mesh_flag;
+                 ContactStrategySettings contact;
+                 contact.inner_loop_iterations = inner_loop_iterations;
+                 return std::make_shared<LineSearchContactStrategy>(part, scheme, builder, criteria, max_iteration,
+                                                                    settings, contact, min_alpha);
+             }),
+             py::arg("model_part"), py::arg("scheme"), py::arg("convergence_criterion"), py::arg("builder_and_solver"),
+             py::arg("max_iteration") = 30, py::arg("compute_reactions") = true, py::arg("reform_step_dofs") = true,
+             py::arg("move_mesh_flag") = true, py::arg("inner_loop_iterations") = 5, py::arg("min_alpha") = 1.0e-3,
+             py::keep_alive<1, 2>())
+        .def("LastDisplacementAlpha", &LineSearchContactStrategy::LastDisplacementAlpha)
+        .def("LastMultiplierAlpha", &LineSearchContactStrategy::LastMultiplierAlpha);
 }
 
 }  // namespace contact_app::bindings

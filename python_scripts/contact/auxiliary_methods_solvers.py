@@ -239,25 +239,34 @@ class ContactSolverMixin:
         settings = self.settings
         if settings["analysis_type"].GetString() == "linear":
             return super()._CreateSolutionStrategy()  # type: ignore[misc]
-        kind = settings["solving_strategy_settings"]["type"].GetString()
-        if kind != "newton_raphson":
+        strategy_settings = settings["solving_strategy_settings"]
+        kind = strategy_settings["type"].GetString()
+        if kind not in ("newton_raphson", "line_search"):
             raise not_supported(
-                settings["solving_strategy_settings"],
+                strategy_settings,
                 "type",
                 f'the contact strategy "{kind}"',
-                'use "newton_raphson" (the contact line search is not available yet)',
+                'use "newton_raphson" or "line_search"',
             )
         contact = settings["contact_settings"]
-        return ca.ResidualBasedNewtonRaphsonContactStrategy(
+        arguments = {
+            "max_iteration": settings["max_iteration"].GetInt(),
+            "compute_reactions": settings["compute_reactions"].GetBool(),
+            "reform_step_dofs": True,
+            "move_mesh_flag": settings["move_mesh_flag"].GetBool(),
+            "inner_loop_iterations": contact["inner_loop_iterations"].GetInt(),
+        }
+        strategy = (
+            ca.LineSearchContactStrategy
+            if kind == "line_search"
+            else ca.ResidualBasedNewtonRaphsonContactStrategy
+        )
+        return strategy(
             self.GetComputingModelPart(),
             self._GetScheme(),
             self._GetConvergenceCriterion().criterion,
             self._GetBuilderAndSolver(),
-            max_iteration=settings["max_iteration"].GetInt(),
-            compute_reactions=settings["compute_reactions"].GetBool(),
-            reform_step_dofs=True,
-            move_mesh_flag=settings["move_mesh_flag"].GetBool(),
-            inner_loop_iterations=contact["inner_loop_iterations"].GetInt(),
+            **arguments,
         )
 
     def Initialize(self) -> None:

@@ -1,0 +1,256 @@
+"""Run the 2D Hertz example and compare the contact pressure with the analytic semi-ellipse.
+
+Runs ``ProjectParameters.json`` (from the working directory, else from this folder) on
+``hertz_2d.msh`` in the working directory, writing the mesh first when it is missing or when
+``--refinement`` is given. Afterwards it reads the contact pressure
+p = -AUGMENTED_NORMAL_CONTACT_PRESSURE on the ACTIVE slave (cylinder) nodes, fits the
+semi-ellipse p(x)^2 = p0^2 (1 - x^2/b^2) to it (linear least squares in x^2), and writes
+``hertz_2d_pressure.png`` and ``hertz_2d_summary.txt``.
+Analytic values (plane strain, line load P' per unit length, benchmarks.md 2.2):
+1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2, b = sqrt(4 P' R / (pi E*)), p0 = 2 P' / (pi b).
+P' is what the LINE_LOAD conditions apply at the end (twice the half model's load).
+Exit code 0 when every step converged, 1 otherwise.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import sys
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+import contact_app as ca
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+import make_mesh  # noqa: E402  (the mesh script of this folder)
+
+MESH = "hertz_2d.msh"
+PLOT = "hertz_2d_pressure.png"
+SUMMARY = "hertz_2d_summary.txt"
+DEFAULT_REFINEMENT = 2
+
+
+@dataclass
+class HertzResult:
+    """What one run measured, next to the analytic values."""
+
+    refinement: int | None
+    spacing: float  # slave surface interval at the contact point
+    nodes: int
+    elements: int
+    load: float  # P' of the full cylinder, per unit length
+    effective_modulus: float
+    b_analytic: float
+    p0_analytic: float
+    b: float
+    p0: float
+    active_nodes: int
+    iterations: list[int]
+    converged: bool
+    wall_time: float
+    profile: list[tuple[float, float, bool]] = field(default_factory=list)  # (x, p, active)
+
+    @property
+    def b_error(self) -> float:
+        """Relative error of the half-width."""
+        return abs(self.b - self.b_analytic) / self.b_analytic
+
+    @property
+    def p0_error(self) -> float:
+        """Relative error of the peak pressure."""
+        return abs(self.p0 - self.p0_analytic) / self.p0_analytic
+
+
+def fit_semi_ellipse(x: np.ndarray, p: np.ndarray) -> tuple[float, float]:
+    """(b, p0) of p^2 = p0^2 - (p0/b)^2 x^2 fitted in the least-squares sense."""
+    if len(x) < 2:
+        raise ValueError(f"{len(x)} active contact node(s): cannot fit a semi-ellipse")
+    matrix = np.column_stack((np.ones_like(x), x**2))
+    (a, slope), *_ = np.linalg.lstsq(matrix, p**2, rcond=None)
+    if a <= 0.0 or slope >= 0.0:
+        raise ValueError(
+            f"the pressure profile is not a semi-ellipse (p^2 = {a:g} + {slope:g} x^2)"
+        )
+    return math.sqrt(-a / slope), math.sqrt(a)
+
+
+def _materials(path: Path) -> list[tuple[float, float]]:
+    data = json.loads(path.read_text(encoding="utf-8"))
+    return [
+        (
+            block["Material"]["Variables"]["YOUNG_MODULUS"],
+            block["Material"]["Variables"]["POISSON_RATIO"],
+        )
+        for block in data["properties"]
+    ]
+
+
+def evaluate(analysis: ca.analysis.StructuralMechanicsAnalysis, materials: Path) -> HertzResult:
+    """Measure b and p0 on a finished analysis and compute the analytic values."""
+    main = analysis.model.GetModelPart("Structure")
+    half_load = 0.0
+    for condition in main.GetSubModelPart("LineLoad2D_top").Conditions:
+        nodes = condition.GetNodes()
+        length = math.hypot(nodes[1].X0 - nodes[0].X0, nodes[1].Y0 - nodes[0].Y0)
+        half_load += np.linalg.norm(np.asarray(condition.GetValue(ca.LINE_LOAD))) * length
+    load = 2.0 * half_load  # the model is the half x >= 0
+    compliance = sum((1.0 - nu**2) / young for young, nu in _materials(materials))
+    modulus = 1.0 / compliance
+    b_analytic = math.sqrt(4.0 * load * make_mesh.RADIUS / (math.pi * modulus))
+    p0_analytic = 2.0 * load / (math.pi * b_analytic)
+
+    slave = main.GetSubModelPart("Contact_Slave")
+    profile = sorted(
+        (node.X0, -node.GetValue(ca.AUGMENTED_NORMAL_CONTACT_PRESSURE), node.Is(ca.ACTIVE))
+        for node in slave.Nodes
+    )
+    active = np.array([(x, p) for x, p, is_active in profile if is_active])
+    b, p0 = fit_semi_ellipse(active[:, 0], active[:, 1]) if len(active) else (0.0, 0.0)
+    xs = [x for x, _, _ in profile]
+    steps = analysis.reporter.steps
+    return HertzResult(
+        refinement=None,
+        spacing=xs[1] - xs[0],
+        nodes=main.NumberOfNodes(),
+        elements=main.NumberOfElements(),
+        load=load,
+        effective_modulus=modulus,
+        b_analytic=b_analytic,
+        p0_analytic=p0_analytic,
+        b=b,
+        p0=p0,
+        active_nodes=len(active),
+        iterations=[record.iterations for record in steps],
+        converged=bool(steps) and not analysis.reporter.non_converged_steps(),
+        wall_time=0.0,
+        profile=profile,
+    )
+
+
+def run(workdir: Path, refinement: int | None = None, quiet: bool = True) -> HertzResult:
+    """Run the example in ``workdir``.
+
+    The mesh is written there at level ``refinement``, or at DEFAULT_REFINEMENT when
+    ``refinement`` is None and no mesh exists; otherwise the existing mesh is used.
+    """
+    workdir = Path(workdir).resolve()
+    mesh = workdir / MESH
+    if refinement is None and not mesh.exists():
+        refinement = DEFAULT_REFINEMENT
+    if refinement is not None:
+        make_mesh.write_mesh(mesh, refinement)
+    parameters = workdir / "ProjectParameters.json"
+    if not parameters.exists():
+        parameters = HERE / "ProjectParameters.json"
+    materials = workdir / "materials.json"
+    if not materials.exists():
+        materials = HERE / "materials.json"
+    previous = Path.cwd()
+    os.chdir(workdir)  # inputs and outputs are relative to the working directory (docs/running.md)
+    try:
+        start = time.perf_counter()
+        analysis = ca.analysis.run(parameters, quiet=quiet)
+        elapsed = time.perf_counter() - start
+    finally:
+        os.chdir(previous)
+    result = evaluate(analysis, materials)
+    result.refinement = refinement  # None: an existing mesh of unknown level was reused
+    result.wall_time = elapsed
+    return result
+
+
+def summary(result: HertzResult) -> str:
+    """The text summary of a run."""
+    status = "all steps converged" if result.converged else "NOT CONVERGED"
+    level = "" if result.refinement is None else f", refinement {result.refinement}"
+    lines = [
+        "hertz_2d: elastic cylinder on an elastic foundation, plane strain, ALM frictionless",
+        f"  R = {make_mesh.RADIUS:g} mm, P' = {result.load:.6g} N/mm, "
+        f"E* = {result.effective_modulus:.6g} MPa (units: mm, N, MPa)",
+        f"  mesh: {result.nodes} nodes, {result.elements} quads{level}, contact spacing "
+        f"h = {result.spacing:.4g} (b/h = {result.b_analytic / result.spacing:.1f})",
+        f"  half-width b:    computed {result.b:.6g}, analytic {result.b_analytic:.6g}, "
+        f"error {100 * result.b_error:.2f} % (b/R = {result.b_analytic / make_mesh.RADIUS:.3f})",
+        f"  peak pressure p0: computed {result.p0:.6g}, analytic {result.p0_analytic:.6g}, "
+        f"error {100 * result.p0_error:.2f} %",
+        f"  active slave nodes: {result.active_nodes}",
+        f"  Newton iterations: {sum(result.iterations)} "
+        f"(per step {', '.join(map(str, result.iterations))}), {status}",
+        f"  wall time: {result.wall_time:.2f} s",
+    ]
+    return "\n".join(lines)
+
+
+def plot(result: HertzResult, path: Path) -> None:
+    """Contact pressure on the slave nodes vs the analytic and the fitted semi-ellipse."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    x_max = 2.0 * result.b_analytic
+    shown = [(x, p, a) for x, p, a in result.profile if x <= x_max]
+    fig, axis = plt.subplots(figsize=(7.0, 4.5))
+    curve = np.linspace(0.0, result.b_analytic, 400)
+    axis.plot(
+        curve,
+        result.p0_analytic * np.sqrt(np.clip(1.0 - (curve / result.b_analytic) ** 2, 0.0, None)),
+        "k-",
+        label="Hertz (analytic)",
+    )
+    if result.b > 0.0:
+        fit = np.linspace(0.0, result.b, 400)
+        axis.plot(
+            fit,
+            result.p0 * np.sqrt(np.clip(1.0 - (fit / result.b) ** 2, 0.0, None)),
+            "C0--",
+            label=f"fit: b = {result.b:.4g}, p0 = {result.p0:.4g}",
+        )
+    axis.plot([x for x, _, a in shown if a], [p for _, p, a in shown if a], "C1o", label="active")
+    axis.plot(
+        [x for x, _, a in shown if not a],
+        [p for _, p, a in shown if not a],
+        "C2x",
+        label="inactive",
+    )
+    axis.set_xlabel("x, distance from the contact centre (mm)")
+    axis.set_ylabel("contact pressure (MPa)")
+    axis.set_title(
+        f"2D Hertz: b error {100 * result.b_error:.2f} %, p0 error {100 * result.p0_error:.2f} %"
+    )
+    axis.set_xlim(0.0, x_max)
+    axis.set_ylim(bottom=0.0)
+    axis.grid(True, alpha=0.3)
+    axis.legend()
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run, write the plot and the summary, print the summary; 1 if a step did not converge."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument(
+        "--refinement", type=int, help="write the mesh at this level (1 = coarsest)"
+    )
+    parser.add_argument("--quiet", action="store_true", help="no step table")
+    args = parser.parse_args(argv)
+    workdir = Path.cwd()
+    result = run(workdir, args.refinement, quiet=args.quiet)
+    text = summary(result)
+    (workdir / SUMMARY).write_text(text + "\n", encoding="utf-8")
+    plot(result, workdir / PLOT)
+    print(text)
+    print(f"outputs: {workdir / PLOT}, {workdir / SUMMARY}, {workdir / 'vtk_output'}")
+    return 0 if result.converged else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,130 @@
+"""The hertz_2d example: a cylinder on an elastic foundation against the 2D Hertz solution.
+
+Analytic values (../shared/spec/benchmarks.md §2.2): b = sqrt(4 P' R / (pi E*)), p0 = 2 P' / (pi b).
+The quick test runs the coarsest mesh through the example script (as a user does) and checks its
+outputs; the slow study runs three nested refinements (h halved each time) in-process.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import math
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+EXAMPLE = Path(__file__).parents[3] / "examples" / "hertz_2d"
+STUDY_LEVELS = (1, 2, 3)
+
+
+def _example_module():
+    spec = importlib.util.spec_from_file_location("run_hertz_2d", EXAMPLE / "run_hertz_2d.py")
+    module = importlib.util.module_from_spec(spec)
+    assert spec.loader is not None
+    sys.modules[spec.name] = module  # dataclasses look their module up there
+    spec.loader.exec_module(module)
+    return module
+
+
+def _copy_inputs(directory: Path) -> None:
+    for name in ("ProjectParameters.json", "materials.json"):
+        shutil.copy(EXAMPLE / name, directory / name)
+
+
+def test_semi_ellipse_fit_recovers_half_width_and_peak() -> None:
+    import numpy as np
+
+    fit = _example_module().fit_semi_ellipse
+    x = np.linspace(0.0, 0.9, 7)
+    b, p0 = fit(x, 3.0 * np.sqrt(1.0 - (x / 1.2) ** 2))
+    assert b == pytest.approx(1.2, rel=1e-12)
+    assert p0 == pytest.approx(3.0, rel=1e-12)
+
+
+def test_hertz_2d_coarsest_mesh_runs_converges_and_matches_hertz(tmp_path: Path) -> None:
+    _copy_inputs(tmp_path)
+    run = subprocess.run(
+        [sys.executable, str(EXAMPLE / "run_hertz_2d.py"), "--refinement", "1", "--quiet"],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert run.returncode == 0, run.stdout + run.stderr
+    for name in ("hertz_2d.msh", "hertz_2d_pressure.png", "hertz_2d_summary.txt"):
+        assert (tmp_path / name).stat().st_size > 0, name
+    assert (tmp_path / "hertz_2d_pressure.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert len(list((tmp_path / "vtk_output").glob("Structure_0_*.vtu"))) == 4
+    summary = (tmp_path / "hertz_2d_summary.txt").read_text()
+    assert "all steps converged" in summary
+    assert summary in run.stdout
+
+    # Same run, evaluated in-process from the files it left (mesh reused, not rewritten).
+    result = _example_module().run(tmp_path, None)
+    assert result.converged
+    # About 4.7 surface intervals over the half-width: measured b 0.07 %, p0 0.41 % off.
+    assert result.b_error < 0.03
+    assert result.p0_error < 0.03
+    assert result.active_nodes >= 4
+    # The fitted profile carries the applied load: P'/2 = (pi/4) p0 b on the half model.
+    assert math.pi * result.p0 * result.b / 4.0 == pytest.approx(result.load / 2.0, rel=0.03)
+
+
+def _study(module, directory: Path, levels: tuple[int, ...]) -> list:
+    results = []
+    for level in levels:
+        run_dir = directory / f"refinement_{level}"
+        run_dir.mkdir()
+        _copy_inputs(run_dir)
+        results.append(module.run(run_dir, level))
+    for result in results:
+        print(
+            f"refinement {result.refinement}: h = {result.spacing:.4g}, "
+            f"b error {100 * result.b_error:.3f} %, p0 error {100 * result.p0_error:.3f} %, "
+            f"Newton {sum(result.iterations)}, {result.wall_time:.1f} s"
+        )
+    for coarse, fine in zip(results[:-1], results[1:], strict=True):
+        ratio = coarse.spacing / fine.spacing
+        print(
+            f"observed order {coarse.refinement}->{fine.refinement}: "
+            f"b {math.log(coarse.b_error / fine.b_error) / math.log(ratio):.2f}, "
+            f"p0 {math.log(coarse.p0_error / fine.p0_error) / math.log(ratio):.2f}"
+        )
+    return results
+
+
+@pytest.mark.slow
+def test_hertz_2d_converges_with_refinement(tmp_path: Path) -> None:
+    results = _study(_example_module(), tmp_path, STUDY_LEVELS)
+    assert all(result.converged for result in results)
+    assert [r.p0_error for r in results] == sorted((r.p0_error for r in results), reverse=True)
+    # b is not monotone: measured 0.07, 0.55, 0.16 %. Where the contact edge falls between two
+    # nodes (b/h = 4.7, 9.4, 18.8) moves the fit by a few tenths of a percent, and the coarsest
+    # mesh happens to be the lucky one; every level must stay below 1 % instead.
+    assert all(r.b_error < 0.01 for r in results)
+    assert results[-1].b_error < 0.02
+    assert results[-1].p0_error < 0.05
+
+
+@pytest.mark.slow
+# Regression: pairs the search left inactive missed nodes activated later (b was 3.98 % off).
+def test_hertz_2d_high_load_has_no_edge_pressure_spike(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    module = _example_module()
+    # 16 x the example's load (b/R = 0.047) on a mesh whose fine zone is scaled to match.
+    # Refinement 4 at the example's own load shows the same kind of defect: b 0.67 % off.
+    monkeypatch.setattr(module.make_mesh, "FINE_LENGTH", 0.08 * module.make_mesh.RADIUS)
+    parameters = json.loads((EXAMPLE / "ProjectParameters.json").read_text())
+    load = parameters["processes"]["loads_process_list"][0]["Parameters"]
+    load["modulus"] = "100.0*t"
+    (tmp_path / "ProjectParameters.json").write_text(json.dumps(parameters))
+    shutil.copy(EXAMPLE / "materials.json", tmp_path / "materials.json")
+    result = module.run(tmp_path, 3)
+    assert result.converged
+    assert result.load == pytest.approx(2000.0, rel=1e-12)
+    assert result.b_error < 0.02
