@@ -121,6 +121,9 @@ class AnalysisStage:
                 self.InitializeSolutionStep()
                 solver.Predict()
                 converged = bool(solver.SolveSolutionStep())
+                cutting = getattr(solver, "StepCuttingSettings", lambda: None)()
+                if not converged and cutting is not None:
+                    converged = self._SolveWithSubsteps(*cutting)
                 self.reporter.add_builder_timings(builder.GetTimings())
                 self.reporter.record_step(self._StepRecord(converged))
                 if not converged and self.stop_on_non_convergence:
@@ -128,6 +131,58 @@ class AnalysisStage:
                 self.FinalizeSolutionStep()
             with self.reporter.phase("output"):
                 self.OutputSolutionStep()
+
+    def _SolveWithSubsteps(self, split_factor: float, max_number_splits: int) -> bool:
+        """Redo a step that did not converge in sub-steps from its last converged state.
+
+        The sub-step is the step divided by ``split_factor``, divided again after each sub-step that
+        fails (at most ``max_number_splits`` times); every sub-step restarts from the last converged
+        state (buffer 1 copied into the current step, the mesh moved back) and runs the processes'
+        and the solver's step hooks at its own time. Converged sub-steps but the last are finalised
+        and the time is cloned, so the step ends at its original time (STEP counts the sub-steps).
+
+        Returns:
+            Whether the whole step was solved.
+        """
+        solver = self._GetSolver()
+        part = solver.GetComputingModelPart().GetRootModelPart()
+        info = part.ProcessInfo
+        target = self.time
+        start = target - info[ca.DELTA_TIME]
+        delta = (target - start) / split_factor
+        splits = 1
+        tolerance = 1.0e-12 * max(abs(target), 1.0)
+        time = start
+        utils = ca.VariableUtils()
+        while time < target - tolerance:
+            following = min(time + delta, target)
+            utils.CopySolutionStepData(part, 1, 0)
+            utils.UpdateCurrentPosition(part.Nodes)
+            info[ca.TIME] = following
+            info[ca.DELTA_TIME] = following - time
+            logger.info(
+                "step cut: solving %.6g -> %.6g (split level %d)", time, following, splits
+            )
+            self.InitializeSolutionStep()
+            solver.Predict()
+            if bool(solver.SolveSolutionStep()):
+                time = following
+                if time < target - tolerance:
+                    self.FinalizeSolutionStep()
+                    part.CloneTimeStep(time)
+                continue
+            splits += 1
+            if splits > max_number_splits:
+                logger.warning(
+                    "step cut: still not converged after %d splits at TIME = %.6g",
+                    max_number_splits,
+                    following,
+                )
+                info[ca.TIME] = target
+                return False
+            delta /= split_factor
+        self.time = target
+        return True
 
     def Finalize(self) -> None:
         """Every process ``ExecuteFinalize``, then ``solver.Finalize``."""

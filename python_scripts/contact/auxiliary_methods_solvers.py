@@ -183,21 +183,26 @@ class ContactSolverMixin:
         convert_old_frictional_keys(contact)
         contact.RecursivelyValidateAndAssignDefaults(CONTACT_SETTINGS_DEFAULTS)
         self.mortar_type = check_mortar_type(contact)
-        if contact["adaptative_strategy"].GetBool():
-            raise not_supported(
-                contact,
-                "adaptative_strategy",
-                "step splitting inside the contact strategy",
-                "the analysis reports a step that does not converge; reduce time_step instead",
-            )
         if contact["split_factor"].GetDouble() <= 1.0:
             raise error(contact, "split_factor", "split_factor ≤ 1", "a factor > 1")
+        if contact["max_number_splits"].GetInt() < 1:
+            raise error(contact, "max_number_splits", "max_number_splits < 1", "≥ 1")
         if contact["inner_loop_iterations"].GetInt() < 1:
             raise error(contact, "inner_loop_iterations", "inner_loop_iterations < 1", "≥ 1")
         # Pairs appear and disappear between steps: the DoF set is rebuilt every step.
         self.settings["reform_dofs_at_each_step"].SetBool(True)
         self.settings["clear_storage"].SetBool(True)
         super().ValidateSettings()  # type: ignore[misc]
+
+    def StepCuttingSettings(self) -> tuple[float, int] | None:
+        """(split_factor, max_number_splits) with ``adaptative_strategy``, else None.
+
+        The analysis then redoes a step that did not converge in sub-steps.
+        """
+        contact = self.settings["contact_settings"]
+        if not contact["adaptative_strategy"].GetBool():
+            return None
+        return contact["split_factor"].GetDouble(), contact["max_number_splits"].GetInt()
 
     def _CheckCriterionName(self) -> None:
         """Structural and contact criterion names are both valid here."""

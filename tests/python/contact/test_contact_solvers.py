@@ -54,10 +54,19 @@ def default_solution() -> dict[int, tuple[float, float]]:
         (lambda s: s["contact_settings"].AddValue("simplified_semi_smooth_newton", True), 1e-6),
         (lambda s: s.AddValue("convergence_criterion", "contact_mixed_criterion"), 1e-6),
         (lambda s: s.AddValue("convergence_criterion", "contact_and_criterion"), 1e-6),
+        # Accepted; the step converges, so nothing is cut.
+        (lambda s: s["contact_settings"].AddValue("adaptative_strategy", True), 1e-12),
         # One residual over all DoFs at 1e-4: the Newton loop stops one iteration earlier.
         (lambda s: s.AddValue("convergence_criterion", "residual_criterion"), 1e-5),
     ],
-    ids=["line_search", "simplified_semi_smooth", "mixed", "and", "structural_residual"],
+    ids=[
+        "line_search",
+        "simplified_semi_smooth",
+        "mixed",
+        "and",
+        "adaptative",
+        "structural_residual",
+    ],
 )
 def test_solver_variants_reach_the_same_solution(edit, tolerance, default_solution) -> None:
     analysis = _run(TAYLOR, edit)
