@@ -13,6 +13,8 @@ The ALM frictionless cases are re-run as FrictionlessComponents, as the referenc
 from __future__ import annotations
 
 import json
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -161,3 +163,19 @@ def test_reference_case_matches_the_current_kratos(
     print(f"\n{label}: worst relative error against Kratos {worst:.3e} {errors}")
     record_property("worst_relative_error", worst)
     assert worst < 1.0e-4, errors
+
+
+@pytest.mark.kratos_reference
+@pytest.mark.parametrize("case", ["alm_frictionless_2d_taylor", "mesh_tying_2d", "mpc_2d_matching"])
+def test_reference_case_runs_through_the_command_line(case: str, tmp_path: Path) -> None:
+    """``contact-app run <parameters>`` from another folder: exit 0, checks included."""
+    path = CASES_DIR / f"{CASES[case]}_parameters.json"
+    result = subprocess.run(
+        [sys.executable, "-m", "contact_app", "run", str(path), "--quiet"],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
+    assert result.returncode == 0, result.stderr
