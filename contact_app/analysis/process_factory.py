@@ -172,10 +172,9 @@ class KratosProcessFactory:
             )
         if package == CONTACT_PACKAGE and _import(CONTACT_PACKAGE) is None:
             raise ca.InputError(
-                f'the contact process module "{python_module}" ({full}) is not implemented yet\n'
+                f'the contact package for "{python_module}" ({full}) is not installed\n'
                 f"  where:    {item.Where(key)}\n"
-                "  fix:      contact processes arrive with the contact issue; remove the contact "
-                "process list to run the structural problem alone"
+                "  fix:      reinstall contact_app (scripts/bootstrap.sh)"
             )
         module = _import(f"{package}.{python_module}")
         if module is None:

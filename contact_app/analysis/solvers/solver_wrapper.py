@@ -100,8 +100,8 @@ def _contact_module(settings: Parameters, base: str) -> ModuleType:
         settings,
         key,
         f"the contact solver {prefix}{base} ({key})",
-        "contact solvers arrive with the contact issue; remove the contact settings to run the "
-        "structural problem alone",
+        "the contact solvers are static and implicit dynamic (Bossak/Newmark); remove the contact "
+        "settings to run the structural problem alone",
     )
 
 
