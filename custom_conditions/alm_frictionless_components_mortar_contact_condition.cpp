@@ -8,9 +8,6 @@ namespace {
 
 using namespace frictionless_detail;
 
-inline const Variable<double>* const kMultiplierComponents[] = {
-    &VECTOR_LAGRANGE_MULTIPLIER_X, &VECTOR_LAGRANGE_MULTIPLIER_Y, &VECTOR_LAGRANGE_MULTIPLIER_Z};
-
 /// RHS of kratos_residuals.md §3.2 for one pair, q = [u2 (d·n_m), u1 (d·n_s), λ (d·n_s)].
 template <class T, int TDim, int TNS, int TNM, class TState, class TVector>
 void AddFrictionlessComponentsResidual(const TState& s, double k, const NodalParameters<TNS>& p, TVector& rhs) {
@@ -64,8 +61,7 @@ void ALMC_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo
     rElementalDofList.clear();
     rElementalDofList.reserve(BaseType::MatrixSize);
     AppendDisplacementDofs<TDim, TNS, TNM>(slave, this->GetPairedGeometry(), rElementalDofList);
-    for (int j = 0; j < TNS; ++j)
-        for (int c = 0; c < TDim; ++c) rElementalDofList.push_back(&slave[j].GetDof(*kMultiplierComponents[c]));
+    AppendVectorMultiplierDofs<TDim, TNS>(slave, rElementalDofList);
 }
 
 ALMC_TEMPLATE
@@ -82,24 +78,13 @@ ALMC_TEMPLATE
 int ALMC_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
     BaseType::Check(rCurrentProcessInfo);
     const Geometry& slave = this->GetParentGeometry();
-    for (int j = 0; j < TNS; ++j) {
-        bool has = slave[j].SolutionStepsDataHas(VECTOR_LAGRANGE_MULTIPLIER);
-        for (int c = 0; c < TDim; ++c) has = has && slave[j].HasDofFor(*kMultiplierComponents[c]);
-        CONTACT_CHECK(has, InputError, "condition ", this->Id(), ": slave node ", slave[j].Id(),
-                      " lacks VECTOR_LAGRANGE_MULTIPLIER (historical variable and _X/_Y", TDim == 3 ? "/_Z" : "",
-                      " DoFs)\n  fix: use mortar_type \"ALMContactFrictionlessComponents\" so the solver adds them");
-    }
+    CheckVectorMultiplier<TDim, TNS>(slave, this->Id(), "ALMContactFrictionlessComponents");
     return 0;
 }
 
 ALMC_TEMPLATE
 typename ALMC_CLASS::BaseType::MultiplierVector ALMC_CLASS::MultiplierValues() const {
-    const Geometry& slave = this->GetParentGeometry();
-    typename BaseType::MultiplierVector lambda;
-    for (int j = 0; j < TNS; ++j)
-        lambda.template segment<TDim>(j * TDim) =
-            slave[j].FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER).template head<TDim>();
-    return lambda;
+    return VectorMultiplierValues<TDim, TNS, typename BaseType::MultiplierVector>(this->GetParentGeometry());
 }
 
 ALMC_TEMPLATE

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-/// Pieces shared by the frictionless families (ALM, ALM components and penalty): the displacement DoF blocks, the Σ 2^i state
-/// encoding, the nodal constants k / ε_j / δ_j, the pair gap g̃_j, the spread of a nodal normal force and the
+/// Pieces shared by the frictionless families (ALM, ALM components and penalty): the displacement DoF blocks, the Σ 2^i
+/// state encoding, the nodal constants k / ε_j / δ_j, the pair gap g̃_j, the spread of a nodal normal force and the
 /// explicit WEIGHTED_GAP (+ NODAL_AREA) contribution. Internal to custom_conditions/.
 
 #include <array>
@@ -26,6 +26,39 @@ void AppendDisplacementDofs(const Geometry& slave, const Geometry& master, DofsV
         for (int c = 0; c < TDim; ++c) dofs.push_back(&master[l].GetDof(*kDisplacementComponents[c]));
     for (int j = 0; j < TNS; ++j)
         for (int c = 0; c < TDim; ++c) dofs.push_back(&slave[j].GetDof(*kDisplacementComponents[c]));
+}
+
+inline const Variable<double>* const kVectorMultiplierComponents[] = {
+    &VECTOR_LAGRANGE_MULTIPLIER_X, &VECTOR_LAGRANGE_MULTIPLIER_Y, &VECTOR_LAGRANGE_MULTIPLIER_Z};
+
+/// Appends the slave VECTOR_LAGRANGE_MULTIPLIER_* DoFs, node by node (the λ block of the vector-multiplier families).
+template <int TDim, int TNS>
+void AppendVectorMultiplierDofs(const Geometry& slave, DofsVectorType& dofs) {
+    for (int j = 0; j < TNS; ++j)
+        for (int c = 0; c < TDim; ++c) dofs.push_back(&slave[j].GetDof(*kVectorMultiplierComponents[c]));
+}
+
+/// The λ block of q for the vector-multiplier families: VECTOR_LAGRANGE_MULTIPLIER of each slave node.
+template <int TDim, int TNS, class TVector>
+TVector VectorMultiplierValues(const Geometry& slave) {
+    TVector lambda;
+    for (int j = 0; j < TNS; ++j)
+        lambda.template segment<TDim>(j * TDim) =
+            slave[j].FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER).template head<TDim>();
+    return lambda;
+}
+
+/// @throws InputError naming the node and @p mortar_type if a slave node lacks VECTOR_LAGRANGE_MULTIPLIER (historical)
+///         or its DoFs
+template <int TDim, int TNS>
+void CheckVectorMultiplier(const Geometry& slave, IndexType id, const char* mortar_type) {
+    for (int j = 0; j < TNS; ++j) {
+        bool has = slave[j].SolutionStepsDataHas(VECTOR_LAGRANGE_MULTIPLIER);
+        for (int c = 0; c < TDim; ++c) has = has && slave[j].HasDofFor(*kVectorMultiplierComponents[c]);
+        CONTACT_CHECK(has, InputError, "condition ", id, ": slave node ", slave[j].Id(),
+                      " lacks VECTOR_LAGRANGE_MULTIPLIER (historical variable and _X/_Y", TDim == 3 ? "/_Z" : "",
+                      " DoFs)\n  fix: use mortar_type \"", mortar_type, "\" so the solver adds them");
+    }
 }
 
 /// Σ_i 2^i over the ACTIVE slave nodes.

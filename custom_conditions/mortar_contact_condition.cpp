@@ -4,6 +4,7 @@
 #include "automatic_differentiation/ad_helpers.h"
 #include "contact_app/application.h"
 #include "contact_app/kernel/exceptions.h"
+#include "custom_conditions/mortar_pair_settings.h"
 #include "custom_utilities/mortar_geometry_adapters.h"
 #include "custom_utilities/mortar_normals.h"
 
@@ -68,10 +69,14 @@ void MORTAR_CLASS::CalculateRightHandSide(Vector& rRightHandSideVector, const Pr
 }
 
 MORTAR_TEMPLATE
-void MORTAR_CLASS::CalculateMassMatrix(Matrix& rMassMatrix, const ProcessInfo&) { rMassMatrix.resize(0, 0); }
+void MORTAR_CLASS::CalculateMassMatrix(Matrix& rMassMatrix, const ProcessInfo&) {
+    rMassMatrix.resize(0, 0);
+}
 
 MORTAR_TEMPLATE
-void MORTAR_CLASS::CalculateDampingMatrix(Matrix& rDampingMatrix, const ProcessInfo&) { rDampingMatrix.resize(0, 0); }
+void MORTAR_CLASS::CalculateDampingMatrix(Matrix& rDampingMatrix, const ProcessInfo&) {
+    rDampingMatrix.resize(0, 0);
+}
 
 MORTAR_TEMPLATE
 void MORTAR_CLASS::CalculateOnIntegrationPoints(const Variable<double>&, std::vector<double>& rOutput,
@@ -107,7 +112,9 @@ void MORTAR_CLASS::EquationIdVector(EquationIdVectorType&, const ProcessInfo&) c
 }
 
 MORTAR_TEMPLATE
-void MORTAR_CLASS::GetDofList(DofsVectorType&, const ProcessInfo&) const { throw NotInBase("GetDofList"); }
+void MORTAR_CLASS::GetDofList(DofsVectorType&, const ProcessInfo&) const {
+    throw NotInBase("GetDofList");
+}
 
 MORTAR_TEMPLATE
 int MORTAR_CLASS::GetActiveInactiveValue() const {
@@ -116,8 +123,10 @@ int MORTAR_CLASS::GetActiveInactiveValue() const {
 
 MORTAR_TEMPLATE
 typename MORTAR_CLASS::MultiplierVector MORTAR_CLASS::MultiplierValues() const {
-    if constexpr (NumMultipliers == 0) return MultiplierVector();  // displacement-only families (penalty)
-    else throw NotInBase("MultiplierValues");
+    if constexpr (NumMultipliers == 0)
+        return MultiplierVector();  // displacement-only families (penalty)
+    else
+        throw NotInBase("MultiplierValues");
 }
 
 MORTAR_TEMPLATE
@@ -140,15 +149,15 @@ int MORTAR_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
                   " nodes\n  fix: use the condition name whose suffix matches the two faces");
     for (std::size_t i = 0; i < slave.size(); ++i) {
         const Node& node = slave[i];
-        for (const VariableData* variable : {static_cast<const VariableData*>(&DISPLACEMENT),
-                                             static_cast<const VariableData*>(&WEIGHTED_GAP),
-                                             static_cast<const VariableData*>(&NORMAL)})
+        for (const VariableData* variable :
+             {static_cast<const VariableData*>(&DISPLACEMENT), static_cast<const VariableData*>(&WEIGHTED_GAP),
+              static_cast<const VariableData*>(&NORMAL)})
             CONTACT_CHECK(node.SolutionStepsDataHas(*variable), InputError, "condition ", Id(), ": slave node ",
                           node.Id(), " does not store ", variable->Name(), " as a historical variable",
                           "\n  fix: add it to the model part's solution-step variables (the contact solver does)");
         for (int k = 0; k < TDim; ++k)
-            CONTACT_CHECK(node.HasDofFor(*kDisplacementComponents[k]), InputError, "condition ", Id(),
-                          ": slave node ", node.Id(), " has no ", kDisplacementComponents[k]->Name(), " DoF",
+            CONTACT_CHECK(node.HasDofFor(*kDisplacementComponents[k]), InputError, "condition ", Id(), ": slave node ",
+                          node.Id(), " has no ", kDisplacementComponents[k]->Name(), " DoF",
                           "\n  fix: add the DISPLACEMENT DoFs to the slave nodes");
     }
     return 0;
@@ -156,15 +165,14 @@ int MORTAR_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
 
 MORTAR_TEMPLATE
 MortarIntegrationSettings MORTAR_CLASS::IntegrationSettings() const {
-    MortarIntegrationSettings settings;
     const auto& properties = pGetProperties();
-    if (properties && properties->Has(INTEGRATION_ORDER_CONTACT))
-        settings.integration_order = properties->GetValue(INTEGRATION_ORDER_CONTACT);
+    MortarIntegrationSettings settings = pair_settings::IntegrationSettingsFrom(properties);
     if (IsAxisymmetric()) {
         const double thickness = properties ? properties->GetValue(THICKNESS) : 0.0;
-        CONTACT_CHECK(thickness > 0.0, InputError, "axisymmetric contact condition ", Id(),
-                      " needs a positive THICKNESS in its properties (got ", thickness, ")",
-                      "\n  fix: set THICKNESS on the pair properties (the thickness the axisymmetric solids divide by)");
+        CONTACT_CHECK(
+            thickness > 0.0, InputError, "axisymmetric contact condition ", Id(),
+            " needs a positive THICKNESS in its properties (got ", thickness, ")",
+            "\n  fix: set THICKNESS on the pair properties (the thickness the axisymmetric solids divide by)");
         settings.axisymmetric_thickness = thickness;
     }
     return settings;
@@ -172,15 +180,7 @@ MortarIntegrationSettings MORTAR_CLASS::IntegrationSettings() const {
 
 MORTAR_TEMPLATE
 SegmentationSettings MORTAR_CLASS::SegmentationSettingsFrom(const ProcessInfo& rCurrentProcessInfo) const {
-    SegmentationSettings settings;
-    if (rCurrentProcessInfo.Has(DISTANCE_THRESHOLD))
-        settings.distance_threshold = rCurrentProcessInfo.GetValue(DISTANCE_THRESHOLD);
-    if (rCurrentProcessInfo.Has(ZERO_TOLERANCE_FACTOR))
-        settings.zero_tolerance_factor = rCurrentProcessInfo.GetValue(ZERO_TOLERANCE_FACTOR);
-    const auto& properties = pGetProperties();
-    if (properties && properties->Has(CONSIDER_TESSELLATION))
-        settings.consider_tessellation = properties->GetValue(CONSIDER_TESSELLATION);
-    return settings;
+    return pair_settings::SegmentationSettingsFrom(rCurrentProcessInfo, pGetProperties());
 }
 
 MORTAR_TEMPLATE
@@ -252,16 +252,16 @@ void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Pr
 #undef MORTAR_CLASS
 
 // -- Explicit instantiations: the registered pairs of the implemented families, with and without NV --
-#define CONTACT_APP_INSTANTIATE_MORTAR(FAMILY)                                       \
-    template class MortarContactCondition<2, 2, FrictionalCase::FAMILY, false, 2>;   \
-    template class MortarContactCondition<2, 2, FrictionalCase::FAMILY, true, 2>;    \
-    template class MortarContactCondition<3, 3, FrictionalCase::FAMILY, false, 3>;   \
-    template class MortarContactCondition<3, 3, FrictionalCase::FAMILY, true, 3>;    \
-    template class MortarContactCondition<3, 4, FrictionalCase::FAMILY, false, 4>;   \
-    template class MortarContactCondition<3, 4, FrictionalCase::FAMILY, true, 4>;    \
-    template class MortarContactCondition<3, 3, FrictionalCase::FAMILY, false, 4>;   \
-    template class MortarContactCondition<3, 3, FrictionalCase::FAMILY, true, 4>;    \
-    template class MortarContactCondition<3, 4, FrictionalCase::FAMILY, false, 3>;   \
+#define CONTACT_APP_INSTANTIATE_MORTAR(FAMILY)                                     \
+    template class MortarContactCondition<2, 2, FrictionalCase::FAMILY, false, 2>; \
+    template class MortarContactCondition<2, 2, FrictionalCase::FAMILY, true, 2>;  \
+    template class MortarContactCondition<3, 3, FrictionalCase::FAMILY, false, 3>; \
+    template class MortarContactCondition<3, 3, FrictionalCase::FAMILY, true, 3>;  \
+    template class MortarContactCondition<3, 4, FrictionalCase::FAMILY, false, 4>; \
+    template class MortarContactCondition<3, 4, FrictionalCase::FAMILY, true, 4>;  \
+    template class MortarContactCondition<3, 3, FrictionalCase::FAMILY, false, 4>; \
+    template class MortarContactCondition<3, 3, FrictionalCase::FAMILY, true, 4>;  \
+    template class MortarContactCondition<3, 4, FrictionalCase::FAMILY, false, 3>; \
     template class MortarContactCondition<3, 4, FrictionalCase::FAMILY, true, 3>;
 CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONLESS)
 CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONLESS_COMPONENTS)

@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-/// Mortar integration / segmentation settings of a pair condition that is not a MortarContactCondition (mesh
-/// tying, MPC): the same reads as MortarContactCondition::IntegrationSettings / SegmentationSettingsFrom
-/// (INTEGRATION_ORDER_CONTACT, CONSIDER_TESSELLATION from the Properties; DISTANCE_THRESHOLD,
-/// ZERO_TOLERANCE_FACTOR from the ProcessInfo), plane case only. Internal to custom_conditions/.
+/// Mortar integration / segmentation settings of every pair condition (contact families, mesh tying, MPC):
+/// INTEGRATION_ORDER_CONTACT, CONSIDER_TESSELLATION from the Properties; DISTANCE_THRESHOLD, ZERO_TOLERANCE_FACTOR
+/// from the ProcessInfo (MortarContactCondition adds the axisymmetric thickness). Internal to custom_conditions/.
 
 #include "contact_app/application.h"
 #include "contact_app/kernel/process_info.h"

@@ -18,13 +18,6 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-ModelPart* FindPart(ModelPart& rModelPart, const char* name) {
-    ModelPart& root = rModelPart.GetRootModelPart();
-    if (root.HasSubModelPart(name)) return &root.GetSubModelPart(name);
-    if (rModelPart.HasSubModelPart(name)) return &rModelPart.GetSubModelPart(name);
-    return nullptr;
-}
-
 /// A unit vector orthogonal to n (the reference's fallback tangent: in 2D (n_y, −n_x, 0)).
 Array3 OrthogonalUnit(const Array3& n) {
     if (std::abs(n[2]) < kEps) {  // plane normals: rotate clockwise in the x–y plane
@@ -57,10 +50,10 @@ const char* FamilyName(BaseMortarConvergenceCriteria::Family family) {
 }  // namespace
 
 void UpdateContactNormals(ModelPart& rModelPart) {
-    ModelPart* contact = FindPart(rModelPart, "Contact");
+    ModelPart* contact = ContactUtilities::FindContactPart(rModelPart, "Contact");
     if (contact == nullptr) return;
     ComputeNodesMeanNormalModelPart(*contact, true);
-    ModelPart* computing = FindPart(rModelPart, "ComputingContact");
+    ModelPart* computing = ContactUtilities::FindContactPart(rModelPart, "ComputingContact");
     if (computing == nullptr) return;
     for (const auto& condition : computing->Conditions()) {
         auto* pair = dynamic_cast<PairedCondition*>(condition.get());
@@ -75,7 +68,7 @@ BaseMortarConvergenceCriteria::BaseMortarConvergenceCriteria(Family family, bool
 
 void BaseMortarConvergenceCriteria::UpdateNormalsAndTangents(ModelPart& rModelPart) const {
     if (mFamily == Family::MESH_TYING) return;
-    ModelPart* contact = FindPart(rModelPart, "Contact");
+    ModelPart* contact = ContactUtilities::FindContactPart(rModelPart, "Contact");
     if (contact == nullptr) return;
     UpdateContactNormals(rModelPart);
     if (!IsFrictional()) return;
@@ -115,13 +108,14 @@ bool BaseMortarConvergenceCriteria::PreCriteria(ModelPart& rModelPart, DofsArray
     const int normal_variation = info.Has(CONSIDER_NORMAL_VARIATION) ? info.GetValue(CONSIDER_NORMAL_VARIATION) : 0;
     if (normal_variation != 0 || IsFrictional()) UpdateNormalsAndTangents(rModelPart);
     if (info.Has(ADAPT_PENALTY) && info.GetValue(ADAPT_PENALTY))
-        if (ModelPart* contact = FindPart(rModelPart, "Contact")) AALMAdaptPenaltyValueProcess(*contact).Execute();
+        if (ModelPart* contact = ContactUtilities::FindContactPart(rModelPart, "Contact"))
+            AALMAdaptPenaltyValueProcess(*contact).Execute();
     return true;
 }
 
 void BaseMortarConvergenceCriteria::CountSets(ModelPart& rModelPart) {
     mActiveNodes = mSlipNodes = 0;
-    ModelPart* contact = FindPart(rModelPart, "Contact");
+    ModelPart* contact = ContactUtilities::FindContactPart(rModelPart, "Contact");
     if (contact == nullptr) return;
     for (const auto& node : contact->Nodes()) {
         if (!node->Is(SLAVE) || !node->Is(ACTIVE)) continue;
@@ -137,8 +131,8 @@ bool BaseMortarConvergenceCriteria::PostCriteria(ModelPart& rModelPart, DofsArra
     ProcessInfo& info = rModelPart.GetProcessInfo();
     if (mFamily == Family::MESH_TYING) return true;
     ModelPart& root = rModelPart.GetRootModelPart();
-    ModelPart* computing = FindPart(rModelPart, "ComputingContact");
-    ModelPart* contact = FindPart(rModelPart, "Contact");
+    ModelPart* computing = ContactUtilities::FindContactPart(rModelPart, "ComputingContact");
+    ModelPart* contact = ContactUtilities::FindContactPart(rModelPart, "Contact");
     CONTACT_CHECK(contact != nullptr, InputError, FamilyName(mFamily), ": the model part ", root.FullName(),
                   " has no \"Contact\" sub model part\n  fix: add a contact process (alm_contact_process, ...) to the",
                   " processes of the analysis");

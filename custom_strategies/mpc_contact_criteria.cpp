@@ -18,13 +18,6 @@ constexpr double kDefaultReactionCheckFactor = 1.0e-12;
 /// zero up to round-off, and its sign must not decide the contact status.
 constexpr double kGapTolerance = 1.0e-10;
 
-ModelPart* FindPart(ModelPart& rModelPart, const char* name) {
-    ModelPart& root = rModelPart.GetRootModelPart();
-    if (root.HasSubModelPart(name)) return &root.GetSubModelPart(name);
-    if (rModelPart.HasSubModelPart(name)) return &rModelPart.GetSubModelPart(name);
-    return nullptr;
-}
-
 /// Largest YOUNG_MODULUS of the elements' properties (0 without one): the scale of the tension tolerance.
 double YoungModulus(const ModelPart& rModelPart) {
     double young = 0.0;
@@ -53,31 +46,33 @@ void SyncPairsAndConstraints(ModelPart& computing) {
 }  // namespace
 
 void MPCContactCriteria::ComputeLumpedSlaveArea(ModelPart& rModelPart) {
-    ModelPart* contact = FindPart(rModelPart, "Contact");
+    ModelPart* contact = ContactUtilities::FindContactPart(rModelPart, "Contact");
     if (contact == nullptr) return;
     for (const auto& node : contact->Nodes()) node->SetValue(NODAL_MAUX, 0.0);
     for (const auto& condition : contact->Conditions()) {
         if (!condition->Is(SLAVE)) continue;
         Geometry& face = condition->GetGeometry();
         const double share = std::abs(face.DomainSize()) / static_cast<double>(face.size());
-        for (std::size_t i = 0; i < face.size(); ++i) face[i].SetValue(NODAL_MAUX, face[i].GetValue(NODAL_MAUX) + share);
+        for (std::size_t i = 0; i < face.size(); ++i)
+            face[i].SetValue(NODAL_MAUX, face[i].GetValue(NODAL_MAUX) + share);
     }
 }
 
 bool MPCContactCriteria::PreCriteria(ModelPart& rModelPart, DofsArrayType&, const SparseMatrixType&,
                                      const SystemVectorType&, const SystemVectorType&) {
-    ModelPart* contact = FindPart(rModelPart, "Contact");
+    ModelPart* contact = ContactUtilities::FindContactPart(rModelPart, "Contact");
     if (contact == nullptr) return true;
     const ModelPart& root = rModelPart.GetRootModelPart();
     const bool store_previous = root.HasNodalSolutionStepVariable(WEIGHTED_GAP) && root.GetBufferSize() > 1;
     bool has_area = true;
     for (const auto& node : contact->Nodes()) {
         node->SetValue(CONTACT_FORCE, Array3(Array3::Zero()));
-        if (store_previous) node->FastGetSolutionStepValue(WEIGHTED_GAP, 1) = node->FastGetSolutionStepValue(WEIGHTED_GAP);
+        if (store_previous)
+            node->FastGetSolutionStepValue(WEIGHTED_GAP, 1) = node->FastGetSolutionStepValue(WEIGHTED_GAP);
         if (node->Is(SLAVE) && !(node->Has(NODAL_MAUX) && node->GetValue(NODAL_MAUX) > 0.0)) has_area = false;
     }
     if (!has_area) ComputeLumpedSlaveArea(rModelPart);
-    if (ModelPart* computing = FindPart(rModelPart, "ComputingContact"))
+    if (ModelPart* computing = ContactUtilities::FindContactPart(rModelPart, "ComputingContact"))
         ContactUtilities::ComputeExplicitContributionConditions(*computing);
     return true;
 }
@@ -87,11 +82,11 @@ bool MPCContactCriteria::PostCriteria(ModelPart& rModelPart, DofsArrayType&, con
     mActiveFlips = mSlipFlips = mActiveNodes = mSlipNodes = 0;
     ProcessInfo& info = rModelPart.GetProcessInfo();
     if (!(info.Has(NL_ITERATION_NUMBER) && info.GetValue(NL_ITERATION_NUMBER) > 0)) return true;
-    ModelPart* contact = FindPart(rModelPart, "Contact");
+    ModelPart* contact = ContactUtilities::FindContactPart(rModelPart, "Contact");
     CONTACT_CHECK(contact != nullptr, InputError, "MPCContactCriteria: the model part ",
                   rModelPart.GetRootModelPart().FullName(), " has no \"Contact\" sub model part",
                   "\n  fix: add mpc_contact_process to processes.contact_process_list");
-    ModelPart* computing = FindPart(rModelPart, "ComputingContact");
+    ModelPart* computing = ContactUtilities::FindContactPart(rModelPart, "ComputingContact");
     if (computing != nullptr) ContactUtilities::ComputeExplicitContributionConditions(*computing);
 
     const double factor = info.Has(REACTION_CHECK_STIFFNESS_FACTOR) ? info.GetValue(REACTION_CHECK_STIFFNESS_FACTOR)
@@ -112,8 +107,8 @@ bool MPCContactCriteria::PostCriteria(ModelPart& rModelPart, DofsArrayType&, con
         const Array3 n = UnitNormal(*node);
         const double normal_force = force.dot(n);
         const double pressure = normal_force / lumped_area;
-        const double area = node->Has(NODAL_AREA) && node->GetValue(NODAL_AREA) > 0.0 ? node->GetValue(NODAL_AREA)
-                                                                                      : lumped_area;
+        const double area =
+            node->Has(NODAL_AREA) && node->GetValue(NODAL_AREA) > 0.0 ? node->GetValue(NODAL_AREA) : lumped_area;
         const double gap = node->FastGetSolutionStepValue(WEIGHTED_GAP) / area;
         const double nodal_h = ContactUtilities::NodalH(*node);
         const double length = nodal_h > 0.0 ? nodal_h : std::sqrt(lumped_area);
@@ -122,8 +117,8 @@ bool MPCContactCriteria::PostCriteria(ModelPart& rModelPart, DofsArrayType&, con
             if (active != was_active) ++mActiveFlips;
             node->Set(ACTIVE, active);
         }
-        const double weight = node->Has(NODAL_PAUX) && node->GetValue(NODAL_PAUX) > 0.0 ? node->GetValue(NODAL_PAUX)
-                                                                                       : 1.0;
+        const double weight =
+            node->Has(NODAL_PAUX) && node->GetValue(NODAL_PAUX) > 0.0 ? node->GetValue(NODAL_PAUX) : 1.0;
         if (!active) {
             node->SetValue(CONTACT_FORCE, Array3(Array3::Zero()));
             if (frictional) node->Set(SLIP, false);

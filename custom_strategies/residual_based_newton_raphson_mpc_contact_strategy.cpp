@@ -12,17 +12,6 @@
 #include "custom_utilities/contact_utilities.h"
 
 namespace contact_app {
-namespace {
-
-ModelPart* FindPart(ModelPart& rModelPart, const char* name) {
-    ModelPart& root = rModelPart.GetRootModelPart();
-    if (root.HasSubModelPart(name)) return &root.GetSubModelPart(name);
-    if (rModelPart.HasSubModelPart(name)) return &rModelPart.GetSubModelPart(name);
-    return nullptr;
-}
-
-}  // namespace
-
 ResidualBasedNewtonRaphsonMPCContactStrategy::ResidualBasedNewtonRaphsonMPCContactStrategy(
     ModelPart& rModelPart, Scheme::Pointer scheme, BuilderAndSolver::Pointer builder,
     ConvergenceCriteria::Pointer criteria, int max_iterations, StrategySettings settings,
@@ -36,7 +25,7 @@ ResidualBasedNewtonRaphsonMPCContactStrategy::ResidualBasedNewtonRaphsonMPCConta
 }
 
 void ResidualBasedNewtonRaphsonMPCContactStrategy::ComputeNodalWeights(ModelPart& rModelPart) {
-    ModelPart* contact = FindPart(rModelPart, "Contact");
+    ModelPart* contact = ContactUtilities::FindContactPart(rModelPart, "Contact");
     if (contact == nullptr) return;
     std::unordered_map<IndexType, int> counts;
     for (const auto& condition : contact->Conditions()) {
@@ -51,7 +40,7 @@ void ResidualBasedNewtonRaphsonMPCContactStrategy::ComputeNodalWeights(ModelPart
 }
 
 void ResidualBasedNewtonRaphsonMPCContactStrategy::ComputeExplicitContributions() {
-    if (ModelPart* computing = FindPart(mModelPart, "ComputingContact"))
+    if (ModelPart* computing = ContactUtilities::FindContactPart(mModelPart, "ComputingContact"))
         ContactUtilities::ComputeExplicitContributionConditions(*computing);
 }
 
@@ -64,14 +53,14 @@ void ResidualBasedNewtonRaphsonMPCContactStrategy::InitializeSolutionStep() {
     ComputeNodalWeights(mModelPart);
     // The pairs rebuild their constraints in their InitializeSolutionStep (start-of-step state); the rebuilds inside
     // the step are done by RefreshConstraints, never by the scheme's InitializeNonLinIteration.
-    if (ModelPart* computing = FindPart(mModelPart, "ComputingContact"))
+    if (ModelPart* computing = ContactUtilities::FindContactPart(mModelPart, "ComputingContact"))
         for (const auto& condition : computing->Conditions()) condition->Set(INTERACTION, false);
     mRefreshConstraints = false;
     NewtonRaphsonStrategy::InitializeSolutionStep();
 }
 
 void ResidualBasedNewtonRaphsonMPCContactStrategy::RefreshConstraints() {
-    ModelPart* computing = FindPart(mModelPart, "ComputingContact");
+    ModelPart* computing = ContactUtilities::FindContactPart(mModelPart, "ComputingContact");
     if (computing == nullptr) return;
     const ProcessInfo& info = mModelPart.GetProcessInfo();
     // The pair writes c = w (g̃/A + n·(u₁ − Q u₂)) with u at buffer 1, which is consistent with g̃ only when g̃ was
@@ -97,7 +86,8 @@ void ResidualBasedNewtonRaphsonMPCContactStrategy::RefreshConstraints() {
         condition->Set(INTERACTION, false);
     }
     // Restore in reverse order: a node shared by several pairs gets its first saved (true) value back last.
-    for (auto it = saved.rbegin(); it != saved.rend(); ++it) it->first->FastGetSolutionStepValue(DISPLACEMENT, 1) = it->second;
+    for (auto it = saved.rbegin(); it != saved.rend(); ++it)
+        it->first->FastGetSolutionStepValue(DISPLACEMENT, 1) = it->second;
 }
 
 void ResidualBasedNewtonRaphsonMPCContactStrategy::Predict() {

@@ -14,13 +14,17 @@ namespace {
 
 /// Sets a nodal double to zero where the model stores it (historical first, as the conditions write it).
 void ZeroNodal(Node& node, const Variable<double>& variable) {
-    if (node.SolutionStepsDataHas(variable)) node.FastGetSolutionStepValue(variable) = 0.0;
-    else node.SetValue(variable, 0.0);
+    if (node.SolutionStepsDataHas(variable))
+        node.FastGetSolutionStepValue(variable) = 0.0;
+    else
+        node.SetValue(variable, 0.0);
 }
 
 void ZeroNodal(Node& node, const Variable<Array3>& variable) {
-    if (node.SolutionStepsDataHas(variable)) node.FastGetSolutionStepValue(variable) = Array3::Zero();
-    else if (node.Has(variable)) node.SetValue(variable, Array3(Array3::Zero()));
+    if (node.SolutionStepsDataHas(variable))
+        node.FastGetSolutionStepValue(variable) = Array3::Zero();
+    else if (node.Has(variable))
+        node.SetValue(variable, Array3(Array3::Zero()));
 }
 
 }  // namespace
@@ -88,6 +92,13 @@ Array3 ContactUtilities::GetHalfJumpCenter(const Geometry& geometry) {
     Array3 center = geometry.Center();
     for (std::size_t i = 0; i < geometry.size(); ++i) center += N[i] * geometry[i].GetValue(DELTA_COORDINATES);
     return center;
+}
+
+ModelPart* ContactUtilities::FindContactPart(ModelPart& model_part, const char* name) {
+    ModelPart& root = model_part.GetRootModelPart();
+    if (root.HasSubModelPart(name)) return &root.GetSubModelPart(name);
+    if (model_part.HasSubModelPart(name)) return &model_part.GetSubModelPart(name);
+    return nullptr;
 }
 
 bool ContactUtilities::CheckActivity(const ModelPart& model_part, bool throw_error) {

@@ -37,6 +37,9 @@ public:
     /// @brief Geometry centre moved by Σ N_i(centre) DELTA_COORDINATES_i.
     static Array3 GetHalfJumpCenter(const Geometry& geometry);
 
+    /// @brief The sub model part @p name of the root of @p model_part ("Contact", "ComputingContact"), else the
+    ///        direct child of @p model_part of that name, else nullptr.
+    static ModelPart* FindContactPart(ModelPart& model_part, const char* name);
     /// @brief True iff some node of @p model_part is SLAVE and ACTIVE.
     /// @throws ConvergenceError "CONTACT LOST" if none is and @p throw_error
     static bool CheckActivity(const ModelPart& model_part, bool throw_error = true);

@@ -8,6 +8,7 @@ dynamic contact solvers share.
 from __future__ import annotations
 
 import logging
+from collections.abc import Callable
 from typing import Any
 
 import contact_app as ca
@@ -164,6 +165,37 @@ def check_mortar_type(contact: Parameters) -> str:
     return mortar_type
 
 
+def contact_status(
+    main: ca.ModelPart, frictional: bool, area: Callable[[Any], float]
+) -> tuple[int, int, int, float]:
+    """(active slave nodes, slipping ones, live pairs, max penetration) of the "Contact" part.
+
+    Args:
+        main: the main model part (with "Contact" and "ComputingContact" children).
+        frictional: count the SLIP nodes (frictionless runs leave SLIP set without meaning).
+        area: the nodal area A a node's WEIGHTED_GAP is divided by (penetration = −g̃ / A).
+    """
+    if not main.HasSubModelPart("Contact"):
+        return (0, 0, 0, 0.0)
+    has_gap = main.HasNodalSolutionStepVariable(ca.WEIGHTED_GAP)
+    active = slip = 0
+    penetration = 0.0
+    for node in main.GetSubModelPart("Contact").Nodes:
+        if not (node.Is(ca.SLAVE) and node.Is(ca.ACTIVE)):
+            continue
+        active += 1
+        slip += int(frictional and node.Is(ca.SLIP))
+        nodal_area = area(node)
+        if has_gap and nodal_area > 0.0:
+            penetration = max(penetration, -node.GetSolutionStepValue(ca.WEIGHTED_GAP) / nodal_area)
+    pairs = 0
+    if main.HasSubModelPart("ComputingContact"):
+        for condition in main.GetSubModelPart("ComputingContact").Conditions:
+            if condition.Is(ca.ACTIVE) and not condition.Is(ca.ISOLATED):
+                pairs += 1
+    return (active, slip, pairs, penetration)
+
+
 class ContactSolverMixin:
     """Contact additions to a structural solver (used before the structural base in the MRO)."""
 
@@ -315,25 +347,7 @@ class ContactSolverMixin:
                     for node in geometry:
                         areas[node.Id] = areas.get(node.Id, 0.0) + share
             self._slave_areas = areas
-        has_gap = main.HasNodalSolutionStepVariable(ca.WEIGHTED_GAP)
-        frictional = contact.Is(ca.SLIP)
-        active = slip = 0
-        penetration = 0.0
-        for node in contact.Nodes:
-            if not (node.Is(ca.SLAVE) and node.Is(ca.ACTIVE)):
-                continue
-            active += 1
-            slip += int(frictional and node.Is(ca.SLIP))
-            area = self._slave_areas.get(node.Id, 0.0)
-            if has_gap and area > 0.0:
-                gap = node.GetSolutionStepValue(ca.WEIGHTED_GAP) / area
-                penetration = max(penetration, -gap)
-        pairs = 0
-        if main.HasSubModelPart("ComputingContact"):
-            for condition in main.GetSubModelPart("ComputingContact").Conditions:
-                if condition.Is(ca.ACTIVE) and not condition.Is(ca.ISOLATED):
-                    pairs += 1
-        return (active, slip, pairs, penetration)
+        return contact_status(main, contact.Is(ca.SLIP), lambda n: self._slave_areas.get(n.Id, 0.0))
 
     def FinalizeSolutionStep(self) -> None:
         """Finalize the step; with ``ensure_contact`` a step without contact is an error."""

@@ -19,6 +19,8 @@ from contact_app.analysis.solvers.convergence_criteria_factory import (
 from contact_app.analysis.validation import error, not_supported
 from contact_app.parameters import Parameters, suggest
 
+from .auxiliary_methods_solvers import contact_status
+
 logger = logging.getLogger("contact_app.contact")
 
 MPC_CONTACT_TYPES = ("Frictionless", "Frictional", "MeshTying")
@@ -168,25 +170,12 @@ class MPCContactSolverMixin:
         super().Initialize()  # type: ignore[misc]
 
     def ContactStatus(self) -> tuple[int, int, int, float]:
-        """(active slave nodes, slipping ones, live pairs, max penetration) for the step table."""
-        main = self.main_model_part
-        if not main.HasSubModelPart("Contact"):
-            return (0, 0, 0, 0.0)
-        contact = main.GetSubModelPart("Contact")
-        frictional = self.contact_type == "Frictional"
-        active = slip = 0
-        penetration = 0.0
-        for node in contact.Nodes:
-            if not (node.Is(ca.SLAVE) and node.Is(ca.ACTIVE)):
-                continue
-            active += 1
-            slip += int(frictional and node.Is(ca.SLIP))
-            area = node.GetValue(ca.NODAL_MAUX) if node.Has(ca.NODAL_MAUX) else 0.0
-            if area > 0.0:
-                penetration = max(penetration, -node.GetSolutionStepValue(ca.WEIGHTED_GAP) / area)
-        pairs = 0
-        if main.HasSubModelPart("ComputingContact"):
-            for condition in main.GetSubModelPart("ComputingContact").Conditions:
-                if condition.Is(ca.ACTIVE) and not condition.Is(ca.ISOLATED):
-                    pairs += 1
-        return (active, slip, pairs, penetration)
+        """(active slave nodes, slipping ones, live pairs, max penetration) for the step table.
+
+        The penetration divides WEIGHTED_GAP by the lumped slave area NODAL_MAUX of the criterion.
+        """
+        return contact_status(
+            self.main_model_part,
+            self.contact_type == "Frictional",
+            lambda n: n.GetValue(ca.NODAL_MAUX) if n.Has(ca.NODAL_MAUX) else 0.0,
+        )
