@@ -168,9 +168,10 @@ std::array<std::size_t, 2> ComputeALMFrictionalActiveSet(ModelPart& model_part, 
             lambda = normal * (augmented_normal / k) + (mu < kMachineEpsilon ? Array3(Array3::Zero())
                                                                               : Array3(augmented_tangent / k));
         flips[0] += UpdateActive(*node, true);
-        // Coulomb test with hysteresis; μ = 0 gives 0/0 = NaN for a zero λ̄τ, which compares false: stick.
+        // Coulomb test with hysteresis. A frictionless node slips (the test would be 0/0 and flip between states).
         const double threshold = was_slip ? 1.0 - slip_threshold : 1.0;
-        const bool slip = pure_slip || augmented_tangent.norm() / (-mu * augmented_normal) > threshold;
+        const bool slip = pure_slip || mu < kMachineEpsilon ||
+                          augmented_tangent.norm() / (-mu * augmented_normal) > threshold;
         if (slip) {
             // Along λτ as the reference; when λτ vanishes (first activation) along λ̄τ instead of NaN.
             const Array3 direction = lambda_tangent.norm() > 0.0 ? Direction(lambda_tangent) : Direction(augmented_tangent);

@@ -17,8 +17,9 @@ class ModelPart;
 /// Inputs: k = ProcessInfo SCALE_FACTOR, ε = nodal INITIAL_PENALTY if the node has it else the ProcessInfo one,
 /// g̃ = WEIGHTED_GAP, ũτ = WEIGHTED_SLIP, n = NORMAL, μ = nodal FRICTION_COEFFICIENT, κ = TANGENT_FACTOR,
 /// SLIP_AUGMENTATION_COEFFICIENT and SLIP_THRESHOLD (ProcessInfo, default 0). Comparisons are strict ("< 0").
-/// Deviations: the penalty slip traction has the orientation of its stick value (reference [BUG?] B10), and a
-/// slip traction with a zero tangential multiplier follows λ̄τ instead of being NaN.
+/// Deviations: the penalty slip traction has the orientation of its stick value (reference [BUG?] B10); a slip
+/// traction with a zero tangential multiplier follows λ̄τ instead of being NaN; an ALM node with μ < machine ε
+/// always slips (the reference's Coulomb test is 0/0 there and the node flips between stick and slip).
 namespace ActiveSetUtilities {
 
 /// @brief λ̄n = ε g̃; ACTIVE ⇔ λ̄n < 0. @return the number of nodes whose ACTIVE flag changed
@@ -35,8 +36,9 @@ std::size_t ComputeALMFrictionlessComponentsActiveSet(ModelPart& model_part);
 std::array<std::size_t, 2> ComputePenaltyFrictionalActiveSet(ModelPart& model_part, bool pure_slip = false);
 /// @brief ALM frictional: λ̄n = k n·λ + ε g̃, λ̄τ = k λτ + c κ ε ũτ (c = SLIP_AUGMENTATION_COEFFICIENT on slipping
 ///        nodes, else 1); on activation λ := n λ̄n/k + λ̄τ/k (λ̄τ dropped when μ < machine ε); slip ⇔
-///        |λ̄τ| / (−μ λ̄n) > 1 − SLIP_THRESHOLD (slipping node) or > 1 (sticking node); slip traction
-///        −μ λ̄n λτ/|λτ|; inactive nodes: ũτ := 0, SLIP reset. @param[in] pure_slip every active node slips
+///        μ < machine ε (a frictionless node cannot stick) or |λ̄τ| / (−μ λ̄n) > 1 − SLIP_THRESHOLD (slipping
+///        node) or > 1 (sticking node); slip traction −μ λ̄n λτ/|λτ|; inactive nodes: ũτ := 0, SLIP reset.
+///        @param[in] pure_slip every active node slips
 /// @return {ACTIVE flips, SLIP flips}
 std::array<std::size_t, 2> ComputeALMFrictionalActiveSet(ModelPart& model_part, bool pure_slip = false);
 

@@ -179,7 +179,8 @@ class ALMContactProcess(SearchBaseProcess):
             total += sum(
                 self.settings["friction_coefficients"][key].GetDouble() for key in PAIR_KEYS
             )
-            if total < sys.float_info.epsilon:
+            if total < sys.float_info.epsilon:  # as the reference: nothing can stick
+                self.pure_slip = True
                 logger.warning(
                     "%s: every friction coefficient is zero; the frictional run is pure slip",
                     self.process_name,
