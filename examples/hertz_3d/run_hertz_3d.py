@@ -1,0 +1,363 @@
+"""Run the 3D Hertz example and compare the contact pressure with the analytic half-ellipsoid.
+
+Runs ``ProjectParameters.json`` (from the working directory, else from this folder) on
+``hertz_3d.msh`` in the working directory, writing the mesh first when it is missing or when
+``--refinement`` is given. Afterwards it reads the contact pressure
+p = -AUGMENTED_NORMAL_CONTACT_PRESSURE on the ACTIVE slave (sphere) nodes and estimates the
+contact radius a and the peak pressure p0 in two ways:
+
+* moment: with the nodal forces f_i = p_i A_i (A_i the lumped nodal area of the slave faces in the
+  reference configuration), sum(r^2 f) / sum(f) = (2/5) a^2 for the Hertz profile, and
+  p0 = 3F / (2 pi a^2);
+* fit: p(r)^2 = p0^2 (1 - r^2/a^2) fitted to the active nodes (linear least squares in r^2).
+
+Analytic values (point contact under the force F, benchmarks.md 2.1):
+1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2, a = (3 F R / (4 E*))^(1/3), p0 = 3 F / (2 pi a^2).
+F is what the SURFACE_LOAD conditions apply at the end (four times the quarter model's load).
+Writes ``hertz_3d_pressure.png``, ``hertz_3d_summary.txt`` and ``vtk_output/``.
+Exit code 0 when every step converged, 1 otherwise.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import sys
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+import contact_app as ca
+from contact_app.analysis.reporting import Reporter
+from contact_app.parameters import Parameters
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+import make_mesh  # noqa: E402  (the mesh script of this folder)
+
+MESH = "hertz_3d.msh"
+PLOT = "hertz_3d_pressure.png"
+SUMMARY = "hertz_3d_summary.txt"
+DEFAULT_REFINEMENT = 2
+GAUSS_2 = (-1.0 / math.sqrt(3.0), 1.0 / math.sqrt(3.0))
+
+
+@dataclass
+class HertzResult:
+    """What one run measured, next to the analytic values."""
+
+    refinement: int | None
+    spacing: float  # slave surface interval at the pole
+    nodes: int
+    elements: int
+    dofs: int  # equations of the last step: displacements and the paired slave multipliers
+    load: float  # F on the full sphere
+    effective_modulus: float
+    a_analytic: float
+    p0_analytic: float
+    a: float  # moment estimate
+    p0: float  # 3F / (2 pi a^2) with the moment estimate of a
+    a_fit: float
+    p0_fit: float
+    contact_force: float  # 4 sum(f) over the active slave nodes
+    active_nodes: int
+    iterations: list[int]
+    converged: bool
+    wall_time: float
+    profile: list[tuple[float, float, bool]] = field(default_factory=list)  # (r, p, active)
+
+    @property
+    def a_error(self) -> float:
+        """Relative error of the contact radius (moment estimate)."""
+        return abs(self.a - self.a_analytic) / self.a_analytic
+
+    @property
+    def p0_error(self) -> float:
+        """Relative error of the peak pressure 3F / (2 pi a^2)."""
+        return abs(self.p0 - self.p0_analytic) / self.p0_analytic
+
+    @property
+    def a_fit_error(self) -> float:
+        """Relative error of the fitted contact radius."""
+        return abs(self.a_fit - self.a_analytic) / self.a_analytic
+
+    @property
+    def p0_fit_error(self) -> float:
+        """Relative error of the fitted peak pressure."""
+        return abs(self.p0_fit - self.p0_analytic) / self.p0_analytic
+
+
+def fit_half_ellipsoid(r: np.ndarray, p: np.ndarray) -> tuple[float, float]:
+    """(a, p0) of p^2 = p0^2 - (p0/a)^2 r^2 fitted in the least-squares sense."""
+    if len(r) < 2:
+        raise ValueError(f"{len(r)} active contact node(s): cannot fit a half-ellipsoid")
+    matrix = np.column_stack((np.ones_like(r), r**2))
+    (intercept, slope), *_ = np.linalg.lstsq(matrix, p**2, rcond=None)
+    if intercept <= 0.0 or slope >= 0.0:
+        raise ValueError(
+            f"the pressure profile is not a half-ellipsoid (p^2 = {intercept:g} + {slope:g} r^2)"
+        )
+    return math.sqrt(-intercept / slope), math.sqrt(intercept)
+
+
+def moment_radius(r: np.ndarray, force: np.ndarray) -> float:
+    """Contact radius from sum(r^2 f) / sum(f) = (2/5) a^2, the Hertz pressure's second moment."""
+    total = float(np.sum(force))
+    if total <= 0.0:
+        raise ValueError("no compressive contact force: cannot estimate the contact radius")
+    return math.sqrt(2.5 * float(np.sum(r**2 * force)) / total)
+
+
+def quad_nodal_areas(corners: np.ndarray) -> np.ndarray:
+    """Integrals of the bilinear shape functions over a (possibly warped) quad, shape (4,)."""
+    areas = np.zeros(4)
+    signs = np.array([[-1, -1], [1, -1], [1, 1], [-1, 1]], dtype=float)
+    for xi in GAUSS_2:
+        for eta in GAUSS_2:
+            shape = 0.25 * (1 + signs[:, 0] * xi) * (1 + signs[:, 1] * eta)
+            d_xi = 0.25 * signs[:, 0] * (1 + signs[:, 1] * eta) @ corners
+            d_eta = 0.25 * signs[:, 1] * (1 + signs[:, 0] * xi) @ corners
+            areas += shape * np.linalg.norm(np.cross(d_xi, d_eta))
+    return areas
+
+
+def _reference(node) -> np.ndarray:
+    return np.array([node.X0, node.Y0, node.Z0])
+
+
+def _materials(path: Path) -> list[tuple[float, float]]:
+    data = json.loads(path.read_text(encoding="utf-8"))
+    return [
+        (
+            block["Material"]["Variables"]["YOUNG_MODULUS"],
+            block["Material"]["Variables"]["POISSON_RATIO"],
+        )
+        for block in data["properties"]
+    ]
+
+
+class RecordingAnalysis(ca.analysis.StructuralMechanicsAnalysis):
+    """The driver's analysis, also recording the equation system size of every step."""
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self.system_sizes: list[int] = []
+
+    def FinalizeSolutionStep(self) -> None:  # noqa: N802  (Kratos name)
+        """Record the size of the system just solved, then finalize the step."""
+        builder = self._GetSolver().GetBuilderAndSolver()
+        self.system_sizes.append(builder.GetEquationSystemSize())
+        super().FinalizeSolutionStep()
+
+
+def evaluate(analysis: RecordingAnalysis, materials: Path) -> HertzResult:
+    """Measure a and p0 on a finished analysis and compute the analytic values."""
+    main = analysis.model.GetModelPart("Structure")
+    quarter_load = 0.0
+    for condition in main.GetSubModelPart("SurfaceLoad3D_top").Conditions:
+        corners = np.array([_reference(node) for node in condition.GetNodes()])
+        area = quad_nodal_areas(corners).sum()
+        quarter_load += np.linalg.norm(np.asarray(condition.GetValue(ca.SURFACE_LOAD))) * area
+    load = 4.0 * quarter_load  # the model is the quarter x, y >= 0
+    compliance = sum((1.0 - nu**2) / young for young, nu in _materials(materials))
+    modulus = 1.0 / compliance
+    a_analytic = (3.0 * load * make_mesh.RADIUS / (4.0 * modulus)) ** (1.0 / 3.0)
+    p0_analytic = 3.0 * load / (2.0 * math.pi * a_analytic**2)
+
+    slave = main.GetSubModelPart("Contact_Slave")
+    nodal_area: dict[int, float] = {}
+    for condition in slave.Conditions:
+        nodes = condition.GetNodes()
+        areas = quad_nodal_areas(np.array([_reference(node) for node in nodes]))
+        for node, area in zip(nodes, areas, strict=True):
+            nodal_area[node.Id] = nodal_area.get(node.Id, 0.0) + area
+    rows = sorted(
+        (
+            math.hypot(node.X0, node.Y0),
+            -node.GetValue(ca.AUGMENTED_NORMAL_CONTACT_PRESSURE),
+            node.Is(ca.ACTIVE),
+            nodal_area.get(node.Id, 0.0),
+        )
+        for node in slave.Nodes
+    )
+    active = np.array([(r, p, area) for r, p, is_active, area in rows if is_active])
+    if len(active):
+        force = active[:, 1] * active[:, 2]
+        a = moment_radius(active[:, 0], force)
+        a_fit, p0_fit = fit_half_ellipsoid(active[:, 0], active[:, 1])
+        contact_force = 4.0 * float(force.sum())
+    else:
+        a = a_fit = p0_fit = contact_force = 0.0
+    steps = analysis.reporter.steps
+    return HertzResult(
+        refinement=None,
+        spacing=sorted({round(r, 12) for r, *_ in rows})[1],
+        nodes=main.NumberOfNodes(),
+        elements=main.NumberOfElements(),
+        dofs=analysis.system_sizes[-1] if analysis.system_sizes else 0,
+        load=load,
+        effective_modulus=modulus,
+        a_analytic=a_analytic,
+        p0_analytic=p0_analytic,
+        a=a,
+        p0=3.0 * load / (2.0 * math.pi * a**2) if a > 0.0 else 0.0,
+        a_fit=a_fit,
+        p0_fit=p0_fit,
+        contact_force=contact_force,
+        active_nodes=len(active),
+        iterations=[record.iterations for record in steps],
+        converged=bool(steps) and not analysis.reporter.non_converged_steps(),
+        wall_time=0.0,
+        profile=[(r, p, is_active) for r, p, is_active, _ in rows],
+    )
+
+
+def run(workdir: Path, refinement: int | None = None, quiet: bool = True) -> HertzResult:
+    """Run the example in ``workdir``.
+
+    The mesh is written there at level ``refinement``, or at DEFAULT_REFINEMENT when
+    ``refinement`` is None and no mesh exists; otherwise the existing mesh is used.
+    """
+    workdir = Path(workdir).resolve()
+    mesh = workdir / MESH
+    if refinement is None and not mesh.exists():
+        refinement = DEFAULT_REFINEMENT
+    if refinement is not None:
+        make_mesh.write_mesh(mesh, refinement)
+    parameters = workdir / "ProjectParameters.json"
+    if not parameters.exists():
+        parameters = HERE / "ProjectParameters.json"
+    materials = workdir / "materials.json"
+    if not materials.exists():
+        materials = HERE / "materials.json"
+    previous = Path.cwd()
+    os.chdir(workdir)  # inputs and outputs are relative to the working directory (docs/running.md)
+    try:
+        start = time.perf_counter()
+        analysis = RecordingAnalysis(
+            ca.Model(),
+            Parameters.from_file(parameters),
+            base_dir=parameters.parent,
+            reporter=Reporter(quiet=quiet),
+        )
+        analysis.Run()
+        elapsed = time.perf_counter() - start
+    finally:
+        os.chdir(previous)
+    result = evaluate(analysis, materials)
+    result.refinement = refinement  # None: an existing mesh of unknown level was reused
+    result.wall_time = elapsed
+    return result
+
+
+def summary(result: HertzResult) -> str:
+    """The text summary of a run."""
+    status = "all steps converged" if result.converged else "NOT CONVERGED"
+    level = "" if result.refinement is None else f", refinement {result.refinement}"
+    lines = [
+        "hertz_3d: elastic sphere on an elastic block, quarter model, ALM frictionless",
+        f"  R = {make_mesh.RADIUS:g} mm, F = {result.load:.6g} N, "
+        f"E* = {result.effective_modulus:.6g} MPa (units: mm, N, MPa)",
+        f"  mesh: {result.nodes} nodes, {result.elements} hexahedra{level}, {result.dofs} DoFs, "
+        f"contact spacing h = {result.spacing:.4g} "
+        f"(a/h = {result.a_analytic / result.spacing:.1f})",
+        f"  contact radius a (moment): computed {result.a:.6g}, analytic "
+        f"{result.a_analytic:.6g}, error {100 * result.a_error:.2f} % "
+        f"(a/R = {result.a_analytic / make_mesh.RADIUS:.3f})",
+        f"  peak pressure p0 = 3F/(2 pi a^2): computed {result.p0:.6g}, analytic "
+        f"{result.p0_analytic:.6g}, error {100 * result.p0_error:.2f} %",
+        f"  fit p^2 = p0^2 (1 - r^2/a^2): a = {result.a_fit:.6g} "
+        f"(error {100 * result.a_fit_error:.2f} %), p0 = {result.p0_fit:.6g} "
+        f"(error {100 * result.p0_fit_error:.2f} %)",
+        f"  active slave nodes: {result.active_nodes}, their force 4 sum(p A) = "
+        f"{result.contact_force:.6g} N "
+        f"({100 * (result.contact_force / result.load - 1):+.2f} % of F)",
+        f"  Newton iterations: {sum(result.iterations)} "
+        f"(per step {', '.join(map(str, result.iterations))}), {status}",
+        f"  wall time: {result.wall_time:.2f} s",
+    ]
+    return "\n".join(lines)
+
+
+def _profile(p0: float, a: float, r: np.ndarray) -> np.ndarray:
+    return p0 * np.sqrt(np.clip(1.0 - (r / a) ** 2, 0.0, None))
+
+
+def plot(result: HertzResult, path: Path) -> None:
+    """Contact pressure on the slave nodes vs r, with the analytic and the fitted profiles."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    r_max = 2.0 * result.a_analytic
+    shown = [(r, p, a) for r, p, a in result.profile if r <= r_max]
+    fig, axis = plt.subplots(figsize=(7.0, 4.5))
+    curve = np.linspace(0.0, result.a_analytic, 400)
+    axis.plot(
+        curve,
+        _profile(result.p0_analytic, result.a_analytic, curve),
+        "k-",
+        label="Hertz (analytic)",
+    )
+    if result.a > 0.0:
+        curve = np.linspace(0.0, result.a, 400)
+        axis.plot(
+            curve,
+            _profile(result.p0, result.a, curve),
+            "C3:",
+            label=f"moment: a = {result.a:.4g}, p0 = 3F/(2πa²) = {result.p0:.4g}",
+        )
+        curve = np.linspace(0.0, result.a_fit, 400)
+        axis.plot(
+            curve,
+            _profile(result.p0_fit, result.a_fit, curve),
+            "C0--",
+            label=f"fit: a = {result.a_fit:.4g}, p0 = {result.p0_fit:.4g}",
+        )
+    axis.plot([r for r, _, a in shown if a], [p for _, p, a in shown if a], "C1o", label="active")
+    axis.plot(
+        [r for r, _, a in shown if not a],
+        [p for _, p, a in shown if not a],
+        "C2x",
+        label="inactive",
+    )
+    axis.set_xlabel("r, distance from the contact axis (mm)")
+    axis.set_ylabel("contact pressure (MPa)")
+    axis.set_title(
+        f"3D Hertz: a error {100 * result.a_error:.2f} %, p0 error {100 * result.p0_error:.2f} %"
+    )
+    axis.set_xlim(0.0, r_max)
+    axis.set_ylim(bottom=0.0)
+    axis.grid(True, alpha=0.3)
+    axis.legend(fontsize="small")
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run, write the plot and the summary, print the summary; 1 if a step did not converge."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument(
+        "--refinement", type=int, help="write the mesh at this level (1 = coarsest)"
+    )
+    parser.add_argument("--quiet", action="store_true", help="no step table")
+    args = parser.parse_args(argv)
+    workdir = Path.cwd()
+    result = run(workdir, args.refinement, quiet=args.quiet)
+    text = summary(result)
+    (workdir / SUMMARY).write_text(text + "\n", encoding="utf-8")
+    plot(result, workdir / PLOT)
+    print(text)
+    print(f"outputs: {workdir / PLOT}, {workdir / SUMMARY}, {workdir / 'vtk_output'}")
+    return 0 if result.converged else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
