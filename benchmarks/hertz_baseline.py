@@ -8,8 +8,8 @@ systems, timed separately once per build and multiplied by the number of builds)
 output, and the peak resident memory; then the share of search + contact assembly in the total.
 
 Usage: ``python benchmarks/hertz_baseline.py [--example hertz_2d|hertz_3d] [levels ...]``
-(default hertz_2d, levels 1 2 3). The largest 3D level asked for by issue 9 (>= 2e5 DoFs) is
-``--example hertz_3d 4``; see examples/hertz_3d/README.md for the DoFs of every level.
+(default hertz_2d, levels 1 2 3). For hertz_3d a fractional level is an intermediate mesh
+(``make_mesh.subdivision_factor``): ``--example hertz_3d 3.8`` has 2.8e5 displacement DoFs.
 """
 
 from __future__ import annotations
@@ -27,7 +27,7 @@ EXAMPLES = {"hertz_2d": 2, "hertz_3d": 3}  # example folder -> displacement DoFs
 OUT = ROOT / "build" / "benchmarks"
 
 
-def _measure(example: str, level: int) -> dict:
+def _measure(example: str, level: float) -> dict:
     """Run one level of ``example`` in this process and return its figures."""
     folder = ROOT / "examples" / example
     sys.path.insert(0, str(folder))
@@ -87,7 +87,7 @@ def _measure(example: str, level: int) -> dict:
 def main(argv: list[str]) -> int:
     """Run the levels in child processes (or, with ``--worker EXAMPLE LEVEL``, measure one)."""
     if argv and argv[0] == "--worker":
-        print(json.dumps(_measure(argv[1], int(argv[2]))))
+        print(json.dumps(_measure(argv[1], float(argv[2]) if "." in argv[2] else int(argv[2]))))
         return 0
     example = "hertz_2d"
     if argv and argv[0] == "--example":
@@ -95,7 +95,7 @@ def main(argv: list[str]) -> int:
             print(f"--example expects one of {sorted(EXAMPLES)}", file=sys.stderr)
             return 2
         example, argv = argv[1], argv[2:]
-    levels = [int(a) for a in argv] or [1, 2, 3]
+    levels = [float(a) if "." in a else int(a) for a in argv] or [1, 2, 3]
     OUT.mkdir(parents=True, exist_ok=True)
     rows = []
     for level in levels:
