@@ -7,9 +7,10 @@ DoFs, Newton iterations per step, total wall time and its split into contact sea
 systems, timed separately once per build and multiplied by the number of builds), linear solve,
 output, and the peak resident memory; then the share of search + contact assembly in the total.
 
-Usage: ``python benchmarks/hertz_baseline.py [--example hertz_2d|hertz_3d] [levels ...]``
-(default hertz_2d, levels 1 2 3). For hertz_3d a fractional level is an intermediate mesh
-(``make_mesh.subdivision_factor``): ``--example hertz_3d 3.8`` has 2.8e5 displacement DoFs.
+Usage: ``python benchmarks/hertz_baseline.py [--example E] [--steps N] [levels ...]`` with E =
+hertz_2d (default) or hertz_3d, levels 1 2 3 by default, ``--steps N``: the full load in N equal
+steps instead of the example's own time_step. For hertz_3d a fractional level is an intermediate
+mesh (``make_mesh.subdivision_factor``): ``--example hertz_3d 3.8`` has 2.8e5 displacement DoFs.
 """
 
 from __future__ import annotations
@@ -27,7 +28,7 @@ EXAMPLES = {"hertz_2d": 2, "hertz_3d": 3}  # example folder -> displacement DoFs
 OUT = ROOT / "build" / "benchmarks"
 
 
-def _measure(example: str, level: float) -> dict:
+def _measure(example: str, level: float, steps: int | None = None) -> dict:
     """Run one level of ``example`` in this process and return its figures."""
     folder = ROOT / "examples" / example
     sys.path.insert(0, str(folder))
@@ -49,6 +50,11 @@ def _measure(example: str, level: float) -> dict:
     workdir.mkdir(parents=True, exist_ok=True)
     for name in ("ProjectParameters.json", "materials.json"):
         (workdir / name).write_text((folder / name).read_text())
+    if steps is not None:  # fewer steps: fewer factorisations on the largest meshes
+        parameters = json.loads((workdir / "ProjectParameters.json").read_text())
+        span = parameters["problem_data"]["end_time"] - parameters["problem_data"]["start_time"]
+        parameters["solver_settings"]["time_stepping"]["time_step"] = span / steps
+        (workdir / "ProjectParameters.json").write_text(json.dumps(parameters, indent=1))
     make_mesh.write_mesh(workdir / f"{example}.msh", level)
     os.chdir(workdir)
     start = time.perf_counter()
@@ -87,7 +93,9 @@ def _measure(example: str, level: float) -> dict:
 def main(argv: list[str]) -> int:
     """Run the levels in child processes (or, with ``--worker EXAMPLE LEVEL``, measure one)."""
     if argv and argv[0] == "--worker":
-        print(json.dumps(_measure(argv[1], float(argv[2]) if "." in argv[2] else int(argv[2]))))
+        level = float(argv[2]) if "." in argv[2] else int(argv[2])
+        steps = int(argv[3]) if len(argv) > 3 else None
+        print(json.dumps(_measure(argv[1], level, steps)))
         return 0
     example = "hertz_2d"
     if argv and argv[0] == "--example":
@@ -95,12 +103,15 @@ def main(argv: list[str]) -> int:
             print(f"--example expects one of {sorted(EXAMPLES)}", file=sys.stderr)
             return 2
         example, argv = argv[1], argv[2:]
+    steps: list[str] = []
+    if argv and argv[0] == "--steps":
+        steps, argv = argv[1:2], argv[2:]
     levels = [float(a) if "." in a else int(a) for a in argv] or [1, 2, 3]
     OUT.mkdir(parents=True, exist_ok=True)
     rows = []
     for level in levels:
         done = subprocess.run(
-            [sys.executable, __file__, "--worker", example, str(level)],
+            [sys.executable, __file__, "--worker", example, str(level), *steps],
             capture_output=True,
             text=True,
             check=False,
