@@ -23,9 +23,7 @@ Exit code 0 when every step converged, 1 otherwise.
 from __future__ import annotations
 
 import argparse
-import json
 import math
-import os
 import sys
 import time
 from dataclasses import dataclass, field
@@ -36,8 +34,15 @@ import numpy as np
 import contact_app as ca
 
 HERE = Path(__file__).resolve().parent
-sys.path.insert(0, str(HERE))
+sys.path[:0] = [str(HERE), str(HERE.parent)]
 import make_mesh  # noqa: E402  (the mesh script of this folder)
+from hertz_common import (  # noqa: E402  (examples/hertz_common.py)
+    effective_modulus,
+    example_inputs,
+    fit_elliptic_profile,
+    second_moment_width,
+    working_directory,
+)
 
 MESH = "hertz_2d.msh"
 PLOT = "hertz_2d_pressure.png"
@@ -84,34 +89,12 @@ class HertzResult:
 
 def fit_semi_ellipse(x: np.ndarray, p: np.ndarray) -> tuple[float, float]:
     """(b, p0) of p^2 = p0^2 - (p0/b)^2 x^2 fitted in the least-squares sense."""
-    if len(x) < 2:
-        raise ValueError(f"{len(x)} active contact node(s): cannot fit a semi-ellipse")
-    matrix = np.column_stack((np.ones_like(x), x**2))
-    (a, slope), *_ = np.linalg.lstsq(matrix, p**2, rcond=None)
-    if a <= 0.0 or slope >= 0.0:
-        raise ValueError(
-            f"the pressure profile is not a semi-ellipse (p^2 = {a:g} + {slope:g} x^2)"
-        )
-    return math.sqrt(-a / slope), math.sqrt(a)
+    return fit_elliptic_profile(x, p, "semi-ellipse")
 
 
 def moment_half_width(x: np.ndarray, force: np.ndarray) -> float:
     """Half-width from sum(x^2 f) / sum(f) = b^2 / 4 (second moment of the semi-ellipse)."""
-    total = float(np.sum(force))
-    if total <= 0.0:
-        raise ValueError("no compressive contact force: cannot estimate the half-width")
-    return math.sqrt(4.0 * float(np.sum(x**2 * force)) / total)
-
-
-def _materials(path: Path) -> list[tuple[float, float]]:
-    data = json.loads(path.read_text(encoding="utf-8"))
-    return [
-        (
-            block["Material"]["Variables"]["YOUNG_MODULUS"],
-            block["Material"]["Variables"]["POISSON_RATIO"],
-        )
-        for block in data["properties"]
-    ]
+    return second_moment_width(x, force, 4.0)
 
 
 def evaluate(analysis: ca.analysis.StructuralMechanicsAnalysis, materials: Path) -> HertzResult:
@@ -123,8 +106,7 @@ def evaluate(analysis: ca.analysis.StructuralMechanicsAnalysis, materials: Path)
         length = math.hypot(nodes[1].X0 - nodes[0].X0, nodes[1].Y0 - nodes[0].Y0)
         half_load += np.linalg.norm(np.asarray(condition.GetValue(ca.LINE_LOAD))) * length
     load = 2.0 * half_load  # the model is the half x >= 0
-    compliance = sum((1.0 - nu**2) / young for young, nu in _materials(materials))
-    modulus = 1.0 / compliance
+    modulus = effective_modulus(materials)
     b_analytic = math.sqrt(4.0 * load * make_mesh.RADIUS / (math.pi * modulus))
     p0_analytic = 2.0 * load / (math.pi * b_analytic)
 
@@ -185,20 +167,11 @@ def run(workdir: Path, refinement: int | None = None, quiet: bool = True) -> Her
         refinement = DEFAULT_REFINEMENT
     if refinement is not None:
         make_mesh.write_mesh(mesh, refinement)
-    parameters = workdir / "ProjectParameters.json"
-    if not parameters.exists():
-        parameters = HERE / "ProjectParameters.json"
-    materials = workdir / "materials.json"
-    if not materials.exists():
-        materials = HERE / "materials.json"
-    previous = Path.cwd()
-    os.chdir(workdir)  # inputs and outputs are relative to the working directory (docs/running.md)
-    try:
+    parameters, materials = example_inputs(workdir, HERE)
+    with working_directory(workdir):
         start = time.perf_counter()
         analysis = ca.analysis.run(parameters, quiet=quiet)
         elapsed = time.perf_counter() - start
-    finally:
-        os.chdir(previous)
     result = evaluate(analysis, materials)
     result.refinement = refinement  # None: an existing mesh of unknown level was reused
     result.wall_time = elapsed

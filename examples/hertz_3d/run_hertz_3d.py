@@ -21,9 +21,7 @@ Exit code 0 when every step converged, 1 otherwise.
 from __future__ import annotations
 
 import argparse
-import json
 import math
-import os
 import sys
 import time
 from dataclasses import dataclass, field
@@ -37,8 +35,15 @@ from contact_app.analysis.reporting import Reporter
 from contact_app.parameters import Parameters
 
 HERE = Path(__file__).resolve().parent
-sys.path.insert(0, str(HERE))
+sys.path[:0] = [str(HERE), str(HERE.parent)]
 import make_mesh  # noqa: E402  (the mesh script of this folder)
+from hertz_common import (  # noqa: E402  (examples/hertz_common.py)
+    effective_modulus,
+    example_inputs,
+    fit_elliptic_profile,
+    second_moment_width,
+    working_directory,
+)
 
 MESH = "hertz_3d.msh"
 PLOT = "hertz_3d_pressure.png"
@@ -94,23 +99,12 @@ class HertzResult:
 
 def fit_half_ellipsoid(r: np.ndarray, p: np.ndarray) -> tuple[float, float]:
     """(a, p0) of p^2 = p0^2 - (p0/a)^2 r^2 fitted in the least-squares sense."""
-    if len(r) < 2:
-        raise ValueError(f"{len(r)} active contact node(s): cannot fit a half-ellipsoid")
-    matrix = np.column_stack((np.ones_like(r), r**2))
-    (intercept, slope), *_ = np.linalg.lstsq(matrix, p**2, rcond=None)
-    if intercept <= 0.0 or slope >= 0.0:
-        raise ValueError(
-            f"the pressure profile is not a half-ellipsoid (p^2 = {intercept:g} + {slope:g} r^2)"
-        )
-    return math.sqrt(-intercept / slope), math.sqrt(intercept)
+    return fit_elliptic_profile(r, p, "half-ellipsoid")
 
 
 def moment_radius(r: np.ndarray, force: np.ndarray) -> float:
     """Contact radius from sum(r^2 f) / sum(f) = (2/5) a^2, the Hertz pressure's second moment."""
-    total = float(np.sum(force))
-    if total <= 0.0:
-        raise ValueError("no compressive contact force: cannot estimate the contact radius")
-    return math.sqrt(2.5 * float(np.sum(r**2 * force)) / total)
+    return second_moment_width(r, force, 2.5)
 
 
 def quad_nodal_areas(corners: np.ndarray) -> np.ndarray:
@@ -128,17 +122,6 @@ def quad_nodal_areas(corners: np.ndarray) -> np.ndarray:
 
 def _reference(node) -> np.ndarray:
     return np.array([node.X0, node.Y0, node.Z0])
-
-
-def _materials(path: Path) -> list[tuple[float, float]]:
-    data = json.loads(path.read_text(encoding="utf-8"))
-    return [
-        (
-            block["Material"]["Variables"]["YOUNG_MODULUS"],
-            block["Material"]["Variables"]["POISSON_RATIO"],
-        )
-        for block in data["properties"]
-    ]
 
 
 class RecordingAnalysis(ca.analysis.StructuralMechanicsAnalysis):
@@ -164,8 +147,7 @@ def evaluate(analysis: RecordingAnalysis, materials: Path) -> HertzResult:
         area = quad_nodal_areas(corners).sum()
         quarter_load += np.linalg.norm(np.asarray(condition.GetValue(ca.SURFACE_LOAD))) * area
     load = 4.0 * quarter_load  # the model is the quarter x, y >= 0
-    compliance = sum((1.0 - nu**2) / young for young, nu in _materials(materials))
-    modulus = 1.0 / compliance
+    modulus = effective_modulus(materials)
     a_analytic = (3.0 * load * make_mesh.RADIUS / (4.0 * modulus)) ** (1.0 / 3.0)
     p0_analytic = 3.0 * load / (2.0 * math.pi * a_analytic**2)
 
@@ -229,15 +211,8 @@ def run(workdir: Path, refinement: int | None = None, quiet: bool = True) -> Her
         refinement = DEFAULT_REFINEMENT
     if refinement is not None:
         make_mesh.write_mesh(mesh, refinement)
-    parameters = workdir / "ProjectParameters.json"
-    if not parameters.exists():
-        parameters = HERE / "ProjectParameters.json"
-    materials = workdir / "materials.json"
-    if not materials.exists():
-        materials = HERE / "materials.json"
-    previous = Path.cwd()
-    os.chdir(workdir)  # inputs and outputs are relative to the working directory (docs/running.md)
-    try:
+    parameters, materials = example_inputs(workdir, HERE)
+    with working_directory(workdir):
         start = time.perf_counter()
         analysis = RecordingAnalysis(
             ca.Model(),
@@ -247,8 +222,6 @@ def run(workdir: Path, refinement: int | None = None, quiet: bool = True) -> Her
         )
         analysis.Run()
         elapsed = time.perf_counter() - start
-    finally:
-        os.chdir(previous)
     result = evaluate(analysis, materials)
     result.refinement = refinement  # None: an existing mesh of unknown level was reused
     result.wall_time = elapsed

@@ -1,0 +1,73 @@
+"""What the 2D and 3D Hertz examples share: the contact width estimates, E*, inputs, folder.
+
+Both examples measure an elliptic pressure profile p(c) = p0 sqrt(1 - c^2/w^2) (c = x in 2D, the
+radius r in 3D; w = b or a) two ways: a least-squares fit of p^2 against c^2, and the second
+moment of the nodal contact forces, w^2 = ratio * sum(c^2 f) / sum(f) (ratio 4 for the 2D
+semi-ellipse, 5/2 for the 3D half-ellipsoid), which integrates the whole profile and so does not
+depend on where the contact edge falls between two nodes.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import math
+import os
+from collections.abc import Iterator
+from pathlib import Path
+
+import numpy as np
+
+
+def fit_elliptic_profile(c: np.ndarray, p: np.ndarray, shape: str) -> tuple[float, float]:
+    """(w, p0) of p^2 = p0^2 - (p0/w)^2 c^2 fitted in the least-squares sense.
+
+    ``shape`` names the profile in the error messages ("semi-ellipse", "half-ellipsoid").
+    """
+    if len(c) < 2:
+        raise ValueError(f"{len(c)} active contact node(s): cannot fit a {shape}")
+    matrix = np.column_stack((np.ones_like(c), c**2))
+    (intercept, slope), *_ = np.linalg.lstsq(matrix, p**2, rcond=None)
+    if intercept <= 0.0 or slope >= 0.0:
+        raise ValueError(
+            f"the pressure profile is not a {shape} (p^2 = {intercept:g} + {slope:g} c^2)"
+        )
+    return math.sqrt(-intercept / slope), math.sqrt(intercept)
+
+
+def second_moment_width(c: np.ndarray, force: np.ndarray, ratio: float) -> float:
+    """The width w from w^2 = ratio * sum(c^2 f) / sum(f)."""
+    total = float(np.sum(force))
+    if total <= 0.0:
+        raise ValueError("no compressive contact force: cannot estimate the contact width")
+    return math.sqrt(ratio * float(np.sum(c**2 * force)) / total)
+
+
+def effective_modulus(materials: Path) -> float:
+    """E* with 1/E* = sum over the bodies of (1 - nu^2)/E, from a Kratos materials file."""
+    data = json.loads(Path(materials).read_text(encoding="utf-8"))
+    compliance = 0.0
+    for block in data["properties"]:
+        variables = block["Material"]["Variables"]
+        compliance += (1.0 - variables["POISSON_RATIO"] ** 2) / variables["YOUNG_MODULUS"]
+    return 1.0 / compliance
+
+
+def example_inputs(workdir: Path, example_dir: Path) -> tuple[Path, Path]:
+    """(ProjectParameters.json, materials.json): the working folder's, else the example's own."""
+    found = []
+    for name in ("ProjectParameters.json", "materials.json"):
+        path = workdir / name
+        found.append(path if path.exists() else example_dir / name)
+    return found[0], found[1]
+
+
+@contextlib.contextmanager
+def working_directory(path: Path) -> Iterator[None]:
+    """Run the block in ``path``: the inputs and outputs are relative to it (docs/running.md)."""
+    previous = Path.cwd()
+    os.chdir(path)
+    try:
+        yield
+    finally:
+        os.chdir(previous)
