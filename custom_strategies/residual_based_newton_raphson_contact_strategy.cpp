@@ -5,6 +5,7 @@
 #include "contact_app/kernel/exceptions.h"
 #include "custom_strategies/mortar_convergence_criteria.h"
 #include "custom_utilities/contact_utilities.h"
+#include "custom_utilities/mortar_normals.h"
 
 namespace contact_app {
 
@@ -36,6 +37,12 @@ void ResidualBasedNewtonRaphsonContactStrategy::Predict() {
     // The prediction moved the mesh (prescribed displacements, dynamics): normals and gaps of the predicted state.
     if (mSettings.move_mesh_flag) UpdateContactNormals(mModelPart);
     ComputeExplicitContributions();
+}
+
+void ResidualBasedNewtonRaphsonContactStrategy::AfterSolutionUpdate() {
+    if (mIterations != 1 || !mSettings.move_mesh_flag) return;
+    ModelPart* contact = ContactUtilities::FindContactPart(mModelPart, "Contact");
+    if (contact != nullptr) ComputeNodesMeanNormalModelPart(*contact, true);
 }
 
 bool ResidualBasedNewtonRaphsonContactStrategy::SolveSolutionStep() {

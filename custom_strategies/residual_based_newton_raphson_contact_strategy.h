@@ -36,6 +36,13 @@ public:
     /// Inner (active-set) loops used by the last step (1 with the full semi-smooth Newton).
     int GetInnerLoopIterations() const { return mInnerLoops; }
 
+protected:
+    /// After the first iteration of a Newton loop, with a moving mesh: the nodal and condition normals of
+    /// "Contact" are recomputed on the moved mesh, once, before the first PostCriteria. The reference strategy
+    /// does this by calling the criteria's InitializeSolutionStep again at that point; without it the whole
+    /// step keeps the normals of its start while the mortar operators are integrated on the current surface.
+    void AfterSolutionUpdate() override;
+
 private:
     void ComputeExplicitContributions();
 

@@ -438,8 +438,14 @@ def test_cli_run_ctrl_c_exits_130_with_one_line(run_case: Path) -> None:
         "import os, signal\n\n\nclass Interrupt:\n"
         "    def __getattr__(self, hook):\n"
         "        if hook == 'ExecuteInitializeSolutionStep':\n"
-        "            return lambda: os.kill(os.getpid(), signal.SIGINT)\n"
-        "        return lambda: None\n\n\n"
+        "            return self.interrupt\n"
+        "        return lambda: None\n\n"
+        "    @staticmethod\n"
+        "    def interrupt():\n"
+        # A shell that starts the test run in the background ignores SIGINT (POSIX): restore
+        # Python's handler so the signal becomes the KeyboardInterrupt a Ctrl-C gives.
+        "        signal.signal(signal.SIGINT, signal.default_int_handler)\n"
+        "        os.kill(os.getpid(), signal.SIGINT)\n\n\n"
         "def Factory(settings, model):\n    return Interrupt()\n"
     )
     _params(lambda p: p["processes"].update(interrupt=[{"python_module": "interrupt_process"}]))(

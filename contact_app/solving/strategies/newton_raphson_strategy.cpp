@@ -49,6 +49,7 @@ bool NewtonRaphsonStrategy::Iterate() {
     UpdateSolution();
     mScheme->FinalizeNonLinIteration(mModelPart, mA, mDx, mB);
     if (!pre) return false;
+    AfterSolutionUpdate();
     if (mCriteria->GetActualizeRHSflag()) mBuilder->BuildRHS(*mScheme, mModelPart, mB);
     const bool converged = mCriteria->PostCriteria(mModelPart, mBuilder->GetDofSet(), mA, mDx, mB, *mBuilder);
     mHistory.push_back(mCriteria->LastNorms());

@@ -34,6 +34,9 @@ public:
 protected:
     /// Updates the unknowns with Δx (line search overrides it).
     virtual void UpdateSolution();
+    /// Called after the update of an iteration whose PreCriteria passed, just before PostCriteria (contact
+    /// strategies refresh their normals there). Does nothing by default.
+    virtual void AfterSolutionUpdate() {}
     /// One Newton iteration: build, solve, update, move mesh, hooks. Returns the criterion's verdict.
     bool Iterate();
 
