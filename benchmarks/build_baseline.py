@@ -1,6 +1,6 @@
 """Clean-build baseline: wall time of a from-scratch build and the largest source files (issue 9).
 
-Configures and builds the whole project (the Python module, every library and the C++ unit tests,
+Configures and builds the whole project (the pybind11 module, every library and the C++ unit tests,
 Release, the same targets as ``scripts/bootstrap.sh``) in a fresh directory with ccache disabled,
 then prints and writes to ``build/benchmarks/build_baseline.json``:
 
@@ -22,6 +22,8 @@ import subprocess
 import sys
 import time
 from pathlib import Path
+
+import pybind11
 
 ROOT = Path(__file__).resolve().parents[1]
 OUT = ROOT / "build" / "benchmarks"
@@ -76,8 +78,9 @@ def main(argv: list[str]) -> int:
     env = dict(os.environ, CCACHE_DISABLE="1")
     configure = [
         "cmake", "-S", str(ROOT), "-B", str(build_dir), "-G", "Ninja",
-        "-DCMAKE_BUILD_TYPE=Release", "-DCONTACT_APP_BUILD_TESTS=ON",
-        f"-DPython_EXECUTABLE={sys.executable}",
+        "-DCMAKE_BUILD_TYPE=Release",
+        "-DCONTACT_APP_BUILD_TESTS=ON", "-DCONTACT_APP_BUILD_PYTHON=ON",
+        f"-DPython_EXECUTABLE={sys.executable}", f"-Dpybind11_DIR={pybind11.get_cmake_dir()}",
     ]  # fmt: skip
     start = time.perf_counter()
     subprocess.run(configure, env=env, check=True, stdout=subprocess.DEVNULL)
