@@ -9,5 +9,6 @@ echo "== C++ unit tests (ctest) =="
 ctest --test-dir build/python --output-on-failure -j "$(nproc)"
 echo "== Python lint (ruff) =="
 "$python" -m ruff check contact_app python_scripts tests/python examples benchmarks
+"$python" -m ruff format --check contact_app python_scripts tests/python examples benchmarks
 echo "== Python tests (pytest) =="
 "$python" -m pytest tests/python "$@"

@@ -160,9 +160,7 @@ class AnalysisStage:
             utils.UpdateCurrentPosition(part.Nodes)
             info[ca.TIME] = following
             info[ca.DELTA_TIME] = following - time
-            logger.info(
-                "step cut: solving %.6g -> %.6g (split level %d)", time, following, splits
-            )
+            logger.info("step cut: solving %.6g -> %.6g (split level %d)", time, following, splits)
             self.InitializeSolutionStep()
             solver.Predict()
             if bool(solver.SolveSolutionStep()):

@@ -87,7 +87,16 @@ MODEL_IMPORT_KEYS: dict[str, Any] = {
 }
 #: Extensions read through meshio when input_type is left at "mdpa" (detection by extension).
 MESHIO_EXTENSIONS = (
-    ".msh", ".vtu", ".vtk", ".inp", ".med", ".xdmf", ".xmf", ".mesh", ".obj", ".ply"
+    ".msh",
+    ".vtu",
+    ".vtk",
+    ".inp",
+    ".med",
+    ".xdmf",
+    ".xmf",
+    ".mesh",
+    ".obj",
+    ".ply",
 )
 
 _FEATURE_FLAGS = {
