@@ -6,10 +6,14 @@ namespace {
 
 using namespace frictional_detail;
 
-/// RHS of kratos_residuals.md §3.3.1 for one pair, q = [u2 (d·n_m), u1 (d·n_s), λ (d·n_s)].
+/// RHS of kratos_residuals.md §3.3.1 for one pair, q = [u2 (d·n_m), u1 (d·n_s), λ (d·n_s)]. The slip law is nodal
+/// (docs/theory/mortar.md §7-8): k Pλ = −μ (kλ_n + ε Q̂) τ̄/|τ̄| with Q̂ the gap the pairs transmit and the direction
+/// of the trial traction τ̄ = kPλ + κεŜ (Ŝ the nodal weighted slip) instead of the reference's frozen t = Pλ/|Pλ|,
+/// which never turns in 3D; each pair adds its share ω_j of the law.
 template <class T, int TDim, int TNS, int TNM, class TState, class TVector>
 void AddALMFrictionalResidual(const TState& s, double k, const FrictionalParameters<TDim, TNS>& p,
-                              const SlipData<TDim, TNS, TNM>& slip, TVector& rhs) {
+                              const SlipData<TDim, TNS, TNM>& slip, const NodalInterfaceMap<TDim, TNS>& nodal,
+                              TVector& rhs) {
     using Vec = Eigen::Matrix<T, TDim, 1>;
     constexpr int lambda_offset = TDim * (TNS + TNM);
     for (int j = 0; j < TNS; ++j) {
@@ -27,17 +31,18 @@ void AddALMFrictionalResidual(const TState& s, double k, const FrictionalParamet
             continue;
         }
         const T gap = PairGap<T, TDim>(s, j);
+        const Vec pair_slip = TangentSlip<T, TDim, TNS, TNM>(s, slip, j);
         Vec force = lambda * k + n * (eps * gap);
         lambda_row = n * (k * gap);
-        if (p.slip[j]) {  // k λ_τ = −μ λ̄_n t enforced by −k/ε Pᵀ(kPλ + μ λ̄_n t)
-            const T augmented_normal = k * lambda_n + eps * gap;
-            const Vec tangent = p.tangent.row(j).transpose().template cast<T>();
-            const Vec traction = p_lambda * k + tangent * (p.mu[j] * augmented_normal);
-            lambda_row -= ProjectTangent<T, TDim>(s, j, traction) * (k / eps);
-        } else {  // zero weighted slip of the step, stick penalty κ ε s
-            const Vec s_j = TangentSlip<T, TDim, TNS, TNM>(s, slip, j);
-            force += s_j * (p.tangent_factor * eps);
-            lambda_row += ProjectTangent<T, TDim>(s, j, s_j) * k;
+        if (p.slip[j]) {  // Coulomb slip, weighted by ω_j so that the pairs assemble the nodal law exactly
+            const T augmented_normal = k * lambda_n + eps * nodal.TransmittedGap(j, gap);
+            const Vec trial = p_lambda * k + nodal.Slip(j, pair_slip) * (p.tangent_factor * eps);
+            const Vec direction = SlipDirection<T, TDim, TNS>(trial, p, j, std::abs(Value(augmented_normal)) + 1e-300);
+            const Vec traction = p_lambda * k + direction * (p.mu[j] * augmented_normal);
+            lambda_row -= ProjectTangent<T, TDim>(s, j, traction) * (nodal.weight[j] * k / eps);
+        } else {  // zero weighted slip of the step, stick penalty κεs
+            force += pair_slip * (p.tangent_factor * eps);
+            lambda_row += ProjectTangent<T, TDim>(s, j, pair_slip) * k;
         }
         SpreadForce<T, TDim, TNS, TNM>(s, j, Vec(force * p.nodal.dynamic_factor[j]), rhs);
         for (int c = 0; c < TDim; ++c) rhs[row + c] += lambda_row[c];
@@ -140,12 +145,12 @@ void ALMF_CLASS::AddFrictionalResidual(const State<T>& state, const ProcessInfo&
                   ": SCALE_FACTOR is not set in the ProcessInfo\n  fix: run the ALM initialisation (ALMFastInit)",
                   " or set ProcessInfo[SCALE_FACTOR]");
     const double k = rCurrentProcessInfo.GetValue(SCALE_FACTOR);
-    // Every node divides by ε (inactive and slip rows); κ is needed by the inactive and the stick rows.
+    // Every node divides by ε (inactive and slip rows) and uses κ (inactive rows, stick penalty, slip trial traction).
     const auto p = ReadFrictionalParameters<TDim, TNS>(
-        slave, rCurrentProcessInfo, this->Id(), "ALM", [](bool) { return true; },
-        [](bool active, bool slip) { return !active || !slip; });
-    const auto slip = MakeSlipData<TDim, TNS, TNM>(*this, mPreviousMortarOperators, p);
-    AddALMFrictionalResidual<T, TDim, TNS, TNM>(state, k, p, slip, rhs);
+        slave, rCurrentProcessInfo, this->Id(), "ALM", [](bool) { return true; }, [](bool, bool) { return true; });
+    const auto slip = MakeSlipData<TDim, TNS, TNM>(*this, mPreviousMortarOperators, AnyActive(p));
+    AddALMFrictionalResidual<T, TDim, TNS, TNM>(
+        state, k, p, slip, MakeNodalInterfaceMap<TDim, TNS>(slave, this->NodalShare(), true), rhs);
 }
 
 ALMF_TEMPLATE

@@ -71,7 +71,7 @@ int ALMC_CLASS::GetActiveInactiveValue() const {
 
 ALMC_TEMPLATE
 void ALMC_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) {
-    AddFrictionlessExplicitContribution<TDim, TNS, TNM>(*this, rCurrentProcessInfo, false);
+    AddFrictionlessExplicitContribution<TDim, TNS, TNM>(*this, rCurrentProcessInfo);
 }
 
 ALMC_TEMPLATE

@@ -59,7 +59,7 @@ int ALM_CLASS::GetActiveInactiveValue() const {
 
 ALM_TEMPLATE
 void ALM_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) {
-    AddFrictionlessExplicitContribution<TDim, TNS, TNM>(*this, rCurrentProcessInfo, false);
+    AddFrictionlessExplicitContribution<TDim, TNS, TNM>(*this, rCurrentProcessInfo);
 }
 
 ALM_TEMPLATE

@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include "contact_app/kernel/serializer.h"
+#include "automatic_differentiation/dual.h"
 #include "custom_conditions/frictionless_mortar_contact_common.h"
 
 namespace contact_app::frictional_detail {
@@ -80,7 +81,10 @@ FrictionalParameters<TDim, TNS> ReadFrictionalParameters(const Geometry& slave, 
     CONTACT_CHECK(!needs_kappa_node || p.tangent_factor > 0.0, InputError, method, " frictional contact condition ", id,
                   ": TANGENT_FACTOR is ", process_info.Has(TANGENT_FACTOR) ? "not positive" : "not set",
                   " in the ProcessInfo, but slave node ", needs_kappa_node ? needs_kappa_node->Id() : 0, " (",
-                  !needs_kappa_node || needs_kappa_node->Is(ACTIVE) ? "stick" : "inactive", ") uses it",
+                  !needs_kappa_node || needs_kappa_node->IsNot(ACTIVE) ? "inactive"
+                  : needs_kappa_node->Is(SLIP)                          ? "slip"
+                                                                        : "stick",
+                  ") uses it",
                   "\n  expected: κ > 0, the ratio of the tangential to the normal penalty",
                   "\n  fix: set ProcessInfo[TANGENT_FACTOR] (the contact process sets it from \"tangent_factor\")");
     return p;
@@ -146,7 +150,7 @@ struct PreviousMortarOperators {
 };
 
 /// Once per step (guarded by previous.initialized): D, M of the pair in the start-of-step configuration
-/// X0 + d(1), with the condition's integration settings (so axisymmetric pairs carry 2πr/t, unlike the reference).
+/// X0 + d(1) (the mesh coordinates when the mesh is not moved), with the condition's integration settings (so axisymmetric pairs carry 2πr/t, unlike the reference).
 template <int TDim, int TNS, int TNM, class TCondition>
 void ComputePreviousOperatorsOnce(const TCondition& condition, const ProcessInfo& process_info,
                                   PreviousMortarOperators<TNS, TNM>& previous) {
@@ -154,8 +158,11 @@ void ComputePreviousOperatorsOnce(const TCondition& condition, const ProcessInfo
     const MortarIntegrator<TDim, TNS, TNM, double> integrator(condition.IntegrationSettings(),
                                                               condition.SegmentationSettingsFrom(process_info));
     const Geometry& slave = condition.GetParentGeometry();
-    const auto x1 = CoordinatesAtStep<TDim, TNS>(slave, 1);
-    const auto x2 = CoordinatesAtStep<TDim, TNM>(condition.GetPairedGeometry(), 1);
+    const Geometry& master = condition.GetPairedGeometry();
+    // A fixed mesh (geometrically linear contact) keeps its operators: those of the mesh coordinates.
+    const bool finite_sliding = MeshFollowsDisplacement(slave) && MeshFollowsDisplacement(master);
+    const auto x1 = finite_sliding ? CoordinatesAtStep<TDim, TNS>(slave, 1) : MeshCoordinates<TDim, TNS>(slave);
+    const auto x2 = finite_sliding ? CoordinatesAtStep<TDim, TNM>(master, 1) : MeshCoordinates<TDim, TNM>(master);
     bool dual = false;
     previous.operators = ComputePreviousMortarOperators<TDim, TNS, TNM>(
         integrator, x1, ToSpatialVector<TDim>(condition.GetValue(NORMAL)), x2, NodalNormals<TDim, TNS>(slave), dual);
@@ -174,47 +181,59 @@ bool IsObjective(const MortarOperators<double, TNS, TNM>& current, const Previou
            (current.M - previous.operators.M).norm() > threshold;
 }
 
-/// The slip data of one evaluation: the start-of-step coordinates are read only when a non-objective stick
-/// node needs them (buffer ≥ 2).
+/// The slip data of one evaluation: the start-of-step coordinates are read only when an active node needs the slip
+/// and the pair is not objective (buffer ≥ 2).
 template <int TDim, int TNS, int TNM, class TCondition>
 SlipData<TDim, TNS, TNM> MakeSlipData(const TCondition& condition, const PreviousMortarOperators<TNS, TNM>& previous,
-                                      const FrictionalParameters<TDim, TNS>& p) {
+                                      bool needs_slip) {
     SlipData<TDim, TNS, TNM> d;
     d.previous = &previous.operators;
     d.objective = condition.IsNot(MODIFIED) && previous.initialized && previous.overlap;
-    bool needs_coordinates = false;
-    for (int j = 0; j < TNS; ++j) needs_coordinates = needs_coordinates || (p.nodal.active[j] && !p.slip[j]);
-    if (needs_coordinates && !d.objective) {
+    if (needs_slip && !d.objective) {
         d.x1_previous = CoordinatesAtStep<TDim, TNS>(condition.GetParentGeometry(), 1);
         d.x2_previous = CoordinatesAtStep<TDim, TNM>(condition.GetPairedGeometry(), 1);
     }
     return d;
 }
 
-/// Adds the pair's g̃ to WEIGHTED_GAP and its weighted slip (objective iff the condition is not MODIFIED and
-/// previous operators exist) to WEIGHTED_SLIP of the slave nodes (historical), or flags ISOLATED.
+/// Whether some slave node is active (its residual rows then use the slip of the step).
+template <int TDim, int TNS>
+bool AnyActive(const FrictionalParameters<TDim, TNS>& p) {
+    for (int j = 0; j < TNS; ++j)
+        if (p.nodal.active[j]) return true;
+    return false;
+}
+
+/// Explicit pass of a frictional pair: as AddFrictionlessExplicitContribution, plus the objective switch of this
+/// configuration (recorded in MODIFIED, the rule of InitializeResidual) and the pair's slip s_j of the step, added to
+/// the historical WEIGHTED_SLIP and kept in the share. The slip is TangentSlip, the very function the residual uses.
 template <int TDim, int TNS, int TNM, class TCondition>
 void AddFrictionalExplicitContribution(TCondition& condition, const ProcessInfo& process_info,
                                        const PreviousMortarOperators<TNS, TNM>& previous) {
+    typename TCondition::template State<double> state;
+    if (!IntegrateForExplicitPass<TDim, TNS, TNM>(condition, process_info, state)) return;
+    condition.Set(MODIFIED, !IsObjective(state.operators, previous, process_info));
+    const auto slip = MakeSlipData<TDim, TNS, TNM>(condition, previous, true);
+    PairNodalShare<TDim, TNS>& share = condition.MutableNodalShare();
     Geometry& slave = *condition.pGetParentGeometry();
-    const Geometry& master = condition.GetPairedGeometry();
-    const MortarIntegrator<TDim, TNS, TNM, double> integrator(condition.IntegrationSettings(),
-                                                              condition.SegmentationSettingsFrom(process_info));
-    const double delta_time = process_info.Has(DELTA_TIME) && process_info.GetValue(DELTA_TIME) > 0.0
-                                  ? process_info.GetValue(DELTA_TIME)
-                                  : 1.0;
-    const bool objective = condition.IsNot(MODIFIED) && previous.initialized && previous.overlap;
-    const auto result = ComputeExplicitFrictionalMortarContribution<TDim, TNS, TNM, double, double>(
-        integrator, CurrentCoordinates<TDim, TNS>(slave), ToSpatialVector<TDim>(condition.GetValue(NORMAL)),
-        CurrentCoordinates<TDim, TNM>(master), NodalNormals<TDim, TNS>(slave), previous.operators,
-        CoordinatesAtStep<TDim, TNS>(slave, 1), CoordinatesAtStep<TDim, TNM>(master, 1), delta_time, objective,
-        ExplicitContributionOptions{});
-    if (result.isolated) return condition.Set(ISOLATED, true);
     for (int j = 0; j < TNS; ++j) {
-        slave[j].FastGetSolutionStepValue(WEIGHTED_GAP) += result.weighted_gap[j];
-        slave[j].FastGetSolutionStepValue(WEIGHTED_SLIP).template head<TDim>() +=
-            result.weighted_slip.row(j).transpose();
+        share.area[j] = state.operators.D.row(j).sum();
+        share.gap[j] = PairGap<double, TDim>(state, j);
+        share.slip.row(j) = TangentSlip<double, TDim, TNS, TNM>(state, slip, j).transpose();
+        AddPairShareToNode(slave[j], share.area[j], share.gap[j]);
+        slave[j].FastGetSolutionStepValue(WEIGHTED_SLIP).template head<TDim>() += share.slip.row(j).transpose();
     }
+}
+
+/// The Coulomb slip direction of node j: the trial traction τ̄ = kPλ + κεŜ (ALM) or κεŜ (penalty) normalised; the
+/// fallback tangent t_j when τ̄ vanishes (no slip and no tangential multiplier yet). docs/theory/mortar.md §8.
+template <class T, int TDim, int TNS>
+Eigen::Matrix<T, TDim, 1> SlipDirection(const Eigen::Matrix<T, TDim, 1>& trial, const FrictionalParameters<TDim, TNS>& p,
+                                        int j, double scale) {
+    using std::sqrt;
+    const T norm_squared = trial.dot(trial);
+    if (!(Value(norm_squared) > 1e-28 * scale * scale)) return p.tangent.row(j).transpose().template cast<T>();
+    return trial / sqrt(norm_squared);
 }
 
 /// Check() of both families: WEIGHTED_SLIP historical on the slave nodes and a buffer of at least 2 steps

@@ -2,7 +2,7 @@
 #pragma once
 /// Pieces shared by the frictionless families (ALM, ALM components and penalty): the displacement DoF blocks, the Σ 2^i
 /// state encoding, the nodal constants k / ε_j / δ_j, the pair gap g̃_j, the spread of a nodal normal force and the
-/// explicit WEIGHTED_GAP (+ NODAL_AREA) contribution. Internal to custom_conditions/.
+/// explicit pass (WEIGHTED_GAP, NODAL_AREA and the pair's share of them, pair_nodal_share.h). Internal to custom_conditions/.
 
 #include <array>
 #include <utility>
@@ -139,24 +139,50 @@ inline void EquationIdsOf(const DofsVectorType& dofs, EquationIdVectorType& ids)
     for (std::size_t i = 0; i < dofs.size(); ++i) ids[i] = dofs[i]->EquationId();
 }
 
-/// Adds the pair's g̃ to the historical WEIGHTED_GAP of the slave nodes and, if @p compute_nodal_area, D_jj to
-/// their non-historical NODAL_AREA (dual basis only); flags ISOLATED instead when the pair does not overlap.
+/// The pair integrated in its current configuration for an explicit pass, and the state the residuals see there.
+/// @return false (and ISOLATED set, share invalid) when the pair does not overlap or was already isolated
 template <int TDim, int TNS, int TNM, class TCondition>
-void AddFrictionlessExplicitContribution(TCondition& condition, const ProcessInfo& process_info,
-                                         bool compute_nodal_area) {
-    Geometry& slave = *condition.pGetParentGeometry();
+bool IntegrateForExplicitPass(TCondition& condition, const ProcessInfo& process_info,
+                              typename TCondition::template State<double>& state) {
+    PairNodalShare<TDim, TNS>& share = condition.MutableNodalShare();
+    share = PairNodalShare<TDim, TNS>{};
+    if (condition.Is(ISOLATED)) return false;  // its residual is zero for the rest of the step: no share either
+    const Geometry& slave = condition.GetParentGeometry();
     const MortarIntegrator<TDim, TNS, TNM, double> integrator(condition.IntegrationSettings(),
                                                               condition.SegmentationSettingsFrom(process_info));
-    ExplicitContributionOptions options;
-    options.compute_nodal_area = compute_nodal_area;
-    const auto result = ComputeExplicitMortarContribution<TDim, TNS, TNM, double, double>(
-        integrator, CurrentCoordinates<TDim, TNS>(slave), ToSpatialVector<TDim>(condition.GetValue(NORMAL)),
-        CurrentCoordinates<TDim, TNM>(condition.GetPairedGeometry()), NodalNormals<TDim, TNS>(slave), options);
-    if (result.isolated) return condition.Set(ISOLATED, true);
+    const Geometry& master = condition.GetPairedGeometry();
+    state.x1 = CurrentCoordinates<TDim, TNS>(slave);
+    state.x2 = CurrentCoordinates<TDim, TNM>(master);
+    state.normals = NodalNormals<TDim, TNS>(slave);
+    // The operators on the mesh coordinates, as the residual (MortarContactCondition::CalculateConditionSystem).
+    const bool finite_sliding = MeshFollowsDisplacement(slave) && MeshFollowsDisplacement(master);
+    const auto pair = IntegrateMortarPair<TDim, TNS, TNM>(
+        integrator, finite_sliding ? state.x1 : MeshCoordinates<TDim, TNS>(slave),
+        ToSpatialVector<TDim>(condition.GetValue(NORMAL)),
+        finite_sliding ? state.x2 : MeshCoordinates<TDim, TNM>(master), state.normals, true);
+    if (!pair.used) {
+        condition.Set(ISOLATED, true);
+        return false;
+    }
+    state.operators = pair.operators;
+    share.valid = true;
+    return true;
+}
+
+/// Explicit pass of a frictionless pair: adds g̃_j to the historical WEIGHTED_GAP, a_j = Σ_k D_jk (= ∫ N_j over the
+/// overlap, for the dual and the standard basis alike) to the non-historical NODAL_AREA and a_j g̃_j to
+/// AREA_WEIGHTED_PAIR_GAP of the slave nodes, and keeps g̃, a as the pair's share; flags ISOLATED instead when the pair
+/// does not overlap.
+template <int TDim, int TNS, int TNM, class TCondition>
+void AddFrictionlessExplicitContribution(TCondition& condition, const ProcessInfo& process_info) {
+    typename TCondition::template State<double> state;
+    if (!IntegrateForExplicitPass<TDim, TNS, TNM>(condition, process_info, state)) return;
+    PairNodalShare<TDim, TNS>& share = condition.MutableNodalShare();
+    Geometry& slave = *condition.pGetParentGeometry();
     for (int j = 0; j < TNS; ++j) {
-        slave[j].FastGetSolutionStepValue(WEIGHTED_GAP) += result.weighted_gap[j];
-        if (compute_nodal_area && result.dual)
-            slave[j].SetValue(NODAL_AREA, slave[j].GetValue(NODAL_AREA) + result.nodal_area[j]);
+        share.area[j] = state.operators.D.row(j).sum();
+        share.gap[j] = PairGap<double, TDim>(state, j);
+        AddPairShareToNode(slave[j], share.area[j], share.gap[j]);
     }
 }
 

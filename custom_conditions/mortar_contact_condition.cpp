@@ -49,6 +49,19 @@ MORTAR_TEMPLATE
 void MORTAR_CLASS::Initialize(const ProcessInfo& rCurrentProcessInfo) {
     PairedCondition::Initialize(rCurrentProcessInfo);
     Set(ISOLATED, false);
+    mNodalShare = PairNodalShare<TDim, TNS>{};
+}
+
+MORTAR_TEMPLATE
+void MORTAR_CLASS::Save(Serializer& rSerializer) const {
+    PairedCondition::Save(rSerializer);
+    mNodalShare.Save(rSerializer);
+}
+
+MORTAR_TEMPLATE
+void MORTAR_CLASS::Load(Serializer& rSerializer) {
+    PairedCondition::Load(rSerializer);
+    mNodalShare.Load(rSerializer);
 }
 
 MORTAR_TEMPLATE
@@ -200,9 +213,15 @@ void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Pr
     const MortarIntegrationSettings integration = IntegrationSettings();
     const SegmentationSettings segmentation = SegmentationSettingsFrom(rCurrentProcessInfo);
 
+    // Moving mesh: D, M and the NV normals follow x = X0 + u (finite sliding). Fixed mesh (move_mesh_flag false): they
+    // stay on the mesh coordinates and only the gap and slip see u, the geometrically linear contact.
+    const bool finite_sliding = MeshFollowsDisplacement(slave) && MeshFollowsDisplacement(master);
+    const auto mesh_x1 = finite_sliding ? x1 : MeshCoordinates<TDim, TNS>(slave);
+    const auto mesh_x2 = finite_sliding ? x2 : MeshCoordinates<TDim, TNM>(master);
+
     if (pLhs == nullptr) {  // residual only, in double
         const MortarIntegrator<TDim, TNS, TNM, double> integrator(integration, segmentation);
-        const auto pair = IntegrateMortarPair<TDim, TNS, TNM>(integrator, x1, slave_normal, x2, normals, true);
+        const auto pair = IntegrateMortarPair<TDim, TNS, TNM>(integrator, mesh_x1, slave_normal, mesh_x2, normals, true);
         if (!pair.used) return Set(ISOLATED, true);
         InitializeResidual(pair.operators, rCurrentProcessInfo);
         const State<double> state{x1, x2, normals, pair.operators, lambda};
@@ -217,8 +236,27 @@ void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Pr
     using Coordinate = Dual<NumCoordinateDofs>;
     const auto seeded_x1 = Seed<NumCoordinateDofs>(x1, 0);
     const auto seeded_x2 = Seed<NumCoordinateDofs>(x2, slave_dofs);
-    const MortarIntegrator<TDim, TNS, TNM, Coordinate> integrator(integration, segmentation);
     State<ADScalar> state;
+    if (!finite_sliding) {  // constant operators and normals
+        const MortarIntegrator<TDim, TNS, TNM, double> integrator(integration, segmentation);
+        const auto pair = IntegrateMortarPair<TDim, TNS, TNM>(integrator, mesh_x1, slave_normal, mesh_x2, normals, true);
+        if (!pair.used) return Set(ISOLATED, true);
+        state.normals = normals.template cast<ADScalar>();
+        state.operators.D = pair.operators.D.template cast<ADScalar>();
+        state.operators.M = pair.operators.M.template cast<ADScalar>();
+        state.x1 = ToLocalDofs<MatrixSize, slave_dofs, master_dofs>(seeded_x1);
+        state.x2 = ToLocalDofs<MatrixSize, slave_dofs, master_dofs>(seeded_x2);
+        for (int i = 0; i < NumMultipliers; ++i)
+            state.multipliers[i] = ADScalar::Variable(lambda[i], NumCoordinateDofs + i);
+        InitializeResidual(pair.operators, rCurrentProcessInfo);
+        LocalVector<ADScalar> rhs;
+        for (int i = 0; i < MatrixSize; ++i) rhs[i] = ADScalar(0.0);
+        AddResidual(state, rCurrentProcessInfo, rhs);
+        *pRhs = Values(rhs);
+        *pLhs = -Jacobian(rhs);
+        return;
+    }
+    const MortarIntegrator<TDim, TNS, TNM, Coordinate> integrator(integration, segmentation);
     MortarPairIntegration<Coordinate, TDim, TNS, TNM> pair;
     if constexpr (TNV) {
         const auto nodal = WithValues(FaceNodalUnitNormals<TDim, TNS, Coordinate>(seeded_x1), normals);

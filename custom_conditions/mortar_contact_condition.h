@@ -5,6 +5,7 @@
 
 #include "automatic_differentiation/dual.h"
 #include "contact_app/kernel/exceptions.h"
+#include "custom_conditions/pair_nodal_share.h"
 #include "custom_conditions/paired_condition.h"
 #include "custom_utilities/mortar_operators.h"
 
@@ -63,7 +64,7 @@ public:
 
     using PairedCondition::PairedCondition;
 
-    /// Resets ISOLATED (the search rebuilt the pair).
+    /// Resets ISOLATED and the nodal share (the search rebuilt the pair).
     void Initialize(const ProcessInfo& rCurrentProcessInfo) override;
     /// @param[out] rLeftHandSideMatrix MatrixSize², −∂RHS/∂q; @param[out] rRightHandSideVector MatrixSize
     void CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
@@ -92,7 +93,15 @@ public:
     ///         or the DISPLACEMENT DoFs
     int Check(const ProcessInfo& rCurrentProcessInfo) const override;
 
+    /// Paired-condition state plus the pair's nodal share.
+    void Save(Serializer& rSerializer) const override;
+    void Load(Serializer& rSerializer) override;
+
     virtual bool IsAxisymmetric() const { return false; }
+    /// What this pair added to the nodal sums at the last explicit pass (pair_nodal_share.h).
+    const PairNodalShare<TDim, TNumNodes>& NodalShare() const { return mNodalShare; }
+    /// Written by the families' explicit pass (AddExplicitContribution).
+    PairNodalShare<TDim, TNumNodes>& MutableNodalShare() { return mNodalShare; }
     /// Mortar integration and segmentation settings from the Properties and the ProcessInfo.
     MortarIntegrationSettings IntegrationSettings() const;
     SegmentationSettings SegmentationSettingsFrom(const ProcessInfo& rCurrentProcessInfo) const;
@@ -113,6 +122,9 @@ protected:
                                     const ProcessInfo& rCurrentProcessInfo) {}
 
 private:
+    /// Written by the families' explicit pass, read by their residuals through MakeNodalInterfaceMap.
+    PairNodalShare<TDim, TNumNodes> mNodalShare;
+
     void CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const ProcessInfo& rCurrentProcessInfo);
     /// The InternalError raised by the methods only the families implement.
     InternalError NotInBase(const char* method) const;

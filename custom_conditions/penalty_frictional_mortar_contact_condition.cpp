@@ -7,25 +7,40 @@ namespace {
 using namespace frictional_detail;
 
 /// RHS of kratos_residuals.md §3.5 with B2 fixed, q = [u2 (d·n_m), u1 (d·n_s)]: S_j[δ_j(ε_j g̃_j n_j + τ_j)] on the
-/// active nodes, nothing on the inactive ones.
+/// active nodes, nothing on the inactive ones. The tangential traction is a return map (docs/theory/mortar.md §8) on
+/// the elastic slip e_j = TANGENT_SLIP carried over from the previous steps plus the slip of the step: stick
+/// τ = κε(P e_j + s_j), slip τ = −μ ε g̃_j t_j along the nodal trial t = (P e + Ŝ)/|P e + Ŝ| (§7), so that every pair
+/// transmits |τ| = μ |ε g̃|.
 template <class T, int TDim, int TNS, int TNM, class TState, class TVector>
 void AddPenaltyFrictionalResidual(const TState& s, const FrictionalParameters<TDim, TNS>& p,
-                                  const SlipData<TDim, TNS, TNM>& slip, TVector& rhs) {
+                                  const SlipData<TDim, TNS, TNM>& slip, const NodalInterfaceMap<TDim, TNS>& nodal,
+                                  const Eigen::Matrix<double, TNS, TDim>& elastic_slip, TVector& rhs) {
     using Vec = Eigen::Matrix<T, TDim, 1>;
     for (int j = 0; j < TNS; ++j) {
         if (!p.nodal.active[j]) continue;
         const double eps = p.nodal.penalty[j];
         const T gap = PairGap<T, TDim>(s, j);
         const Vec n = s.normals.row(j).transpose();
+        const Vec carried = ProjectTangent<T, TDim>(s, j, Vec(elastic_slip.row(j).transpose().template cast<T>()));
+        const Vec pair_slip = TangentSlip<T, TDim, TNS, TNM>(s, slip, j);
         Vec force = n * (eps * gap);
-        if (p.slip[j]) {  // Coulomb: |τ| = μ ε |g̃| along t (ε g̃ < 0 in contact)
-            const Vec tangent = p.tangent.row(j).transpose().template cast<T>();
-            force += tangent * (-p.mu[j] * eps * gap);
-        } else {  // stick penalty on the weighted slip of the step
-            force += TangentSlip<T, TDim, TNS, TNM>(s, slip, j) * (p.tangent_factor * eps);
+        if (p.slip[j]) {  // Coulomb: |τ| = μ ε |g̃| along the nodal trial (ε g̃ < 0 in contact)
+            const Vec trial = (carried + nodal.Slip(j, pair_slip)) * (p.tangent_factor * eps);
+            force += SlipDirection<T, TDim, TNS>(trial, p, j, std::abs(eps * Value(gap)) + 1e-300) *
+                     (-p.mu[j] * eps * gap);
+        } else {
+            force += (carried + pair_slip) * (p.tangent_factor * eps);
         }
         SpreadForce<T, TDim, TNS, TNM>(s, j, Vec(force * p.nodal.dynamic_factor[j]), rhs);
     }
+}
+
+/// TANGENT_SLIP of the slave nodes (zero where never set).
+template <int TDim, int TNS>
+Eigen::Matrix<double, TNS, TDim> ElasticSlips(const Geometry& slave) {
+    Eigen::Matrix<double, TNS, TDim> e;
+    for (int j = 0; j < TNS; ++j) e.row(j) = slave[j].GetValue(TANGENT_SLIP).template head<TDim>().transpose();
+    return e;
 }
 
 }  // namespace
@@ -110,12 +125,15 @@ PENF_TEMPLATE
 template <class T>
 void PENF_CLASS::AddFrictionalResidual(const State<T>& state, const ProcessInfo& rCurrentProcessInfo,
                                        LocalVector<T>& rhs) const {
-    // ε on the active nodes (the inactive ones add nothing); κ only on the stick nodes.
+    // ε and κ on the active nodes (the inactive ones add nothing).
+    const Geometry& slave = this->GetParentGeometry();
     const auto p = ReadFrictionalParameters<TDim, TNS>(
-        this->GetParentGeometry(), rCurrentProcessInfo, this->Id(), "Penalty", [](bool active) { return active; },
-        [](bool active, bool slip) { return active && !slip; });
-    const auto slip = MakeSlipData<TDim, TNS, TNM>(*this, mPreviousMortarOperators, p);
-    AddPenaltyFrictionalResidual<T, TDim, TNS, TNM>(state, p, slip, rhs);
+        slave, rCurrentProcessInfo, this->Id(), "Penalty", [](bool active) { return active; },
+        [](bool active, bool) { return active; });
+    const auto slip = MakeSlipData<TDim, TNS, TNM>(*this, mPreviousMortarOperators, AnyActive(p));
+    AddPenaltyFrictionalResidual<T, TDim, TNS, TNM>(state, p, slip,
+                                                    MakeNodalInterfaceMap<TDim, TNS>(slave, this->NodalShare(), true),
+                                                    ElasticSlips<TDim, TNS>(slave), rhs);
 }
 
 PENF_TEMPLATE

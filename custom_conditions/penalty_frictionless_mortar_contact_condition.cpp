@@ -57,7 +57,7 @@ int PENALTY_CLASS::GetActiveInactiveValue() const {
 
 PENALTY_TEMPLATE
 void PENALTY_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) {
-    AddFrictionlessExplicitContribution<TDim, TNS, TNM>(*this, rCurrentProcessInfo, true);
+    AddFrictionlessExplicitContribution<TDim, TNS, TNM>(*this, rCurrentProcessInfo);
 }
 
 PENALTY_TEMPLATE

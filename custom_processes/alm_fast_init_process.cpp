@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_processes/alm_fast_init_process.h"
 
-#include <iostream>
+#include <cmath>
 #include <unordered_map>
 
 #include "contact_app/application.h"
+#include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/model_part.h"
 
 namespace contact_app {
@@ -18,21 +19,43 @@ void SetNodal(Node& node, const Variable<T>& variable, const T& value) {
     else node.SetValue(variable, value);
 }
 
-/// Nodal FRICTION_COEFFICIENT = mean of the adjacent conditions' property value.
+/// The μ a pair sub model part (ContactSub<key>) prescribes: that of its pair properties (the contact process puts
+/// the "friction_coefficients" setting, or the body's material value, there), if it holds exactly one with μ.
+const Properties* PairFrictionProperties(const ModelPart& pair_part) {
+    const Properties* found = nullptr;
+    for (const auto& properties : pair_part.PropertiesArray()) {
+        if (!properties->Has(FRICTION_COEFFICIENT)) continue;
+        if (found != nullptr) return nullptr;  // ambiguous: fall back to the conditions' own properties
+        found = properties.get();
+    }
+    return found;
+}
+
+/// Nodal FRICTION_COEFFICIENT = mean over the adjacent interface conditions of μ, taken from the pair properties of
+/// the ContactSub<key> part holding the condition, else from the condition's own properties.
+/// @throws InputError naming the condition when neither gives μ (a frictional run must not silently use 0)
 void AverageFrictionCoefficients(ModelPart& model_part) {
+    std::unordered_map<const Condition*, const Properties*> pair_properties;
+    for (const ModelPart* sub : model_part.SubModelParts())
+        if (const Properties* properties = PairFrictionProperties(*sub))
+            for (const auto& condition : sub->Conditions()) pair_properties.emplace(condition.get(), properties);
     std::unordered_map<Node*, std::pair<double, int>> sums;  // Σμ, number of conditions
-    bool warned = false;
     for (const auto& condition : model_part.Conditions()) {
         Geometry& geometry = condition->GetGeometry();
         if (geometry.NumberOfGeometryParts() != 0) continue;
-        const Properties::Pointer& properties = condition->pGetProperties();
-        const bool has_mu = properties && properties->Has(FRICTION_COEFFICIENT);
-        if (!has_mu && !warned) {
-            std::cerr << "[WARNING] ALMFastInit: condition " << condition->Id()
-                      << " has no FRICTION_COEFFICIENT in its properties; 0 is used\n";
-            warned = true;
-        }
-        const double mu = has_mu ? properties->GetValue(FRICTION_COEFFICIENT) : 0.0;
+        const auto pair = pair_properties.find(condition.get());
+        const Properties* properties = pair != pair_properties.end() ? pair->second : condition->pGetProperties().get();
+        CONTACT_CHECK(properties != nullptr && properties->Has(FRICTION_COEFFICIENT), InputError,
+                      "ALMFastInit: interface condition ", condition->Id(), " of model part ", model_part.FullName(),
+                      " has no friction coefficient: neither its pair properties nor its own properties (id ",
+                      condition->pGetProperties() ? condition->pGetProperties()->Id() : 0,
+                      ") define FRICTION_COEFFICIENT\n  expected: μ ≥ 0 for a frictional contact",
+                      "\n  fix: set \"friction_coefficients\" of the contact process for this pair, or FRICTION_COEFFICIENT in",
+                      " the materials of the interface");
+        const double mu = properties->GetValue(FRICTION_COEFFICIENT);
+        CONTACT_CHECK(std::isfinite(mu) && mu >= 0.0, InputError, "ALMFastInit: interface condition ", condition->Id(),
+                      " has FRICTION_COEFFICIENT ", mu, " (properties ", properties->Id(), ")",
+                      "\n  expected: a finite μ ≥ 0\n  fix: correct \"friction_coefficients\" or the materials file");
         for (std::size_t i = 0; i < geometry.size(); ++i) {
             auto& entry = sums[&geometry[i]];
             entry.first += mu;

@@ -10,8 +10,11 @@ class ModelPart;
 /// defined) WEIGHTED_GAP = 0 (and WEIGHTED_SLIP = 0 when frictional), nodal INITIAL_PENALTY = ProcessInfo value,
 /// DYNAMIC_FACTOR = 1, AUGMENTED_NORMAL_CONTACT_PRESSURE = 0 (and AUGMENTED_TANGENT_CONTACT_PRESSURE = 0); condition
 /// NORMAL = 0. Frictional (the model part Is(SLIP)): nodal FRICTION_COEFFICIENT = mean over the adjacent non-paired
-/// conditions of their properties' value (0 for an absent value, with a warning). Unlike the reference, each
-/// condition counts once (not once per sub model part holding it) and nodes without conditions get 0, not NaN.
+/// conditions of μ from the pair properties of their ContactSub<key> part (where the contact process puts its
+/// "friction_coefficients"), else from their own properties. Unlike the reference, each condition counts once (not
+/// once per sub model part holding it), nodes without conditions get 0, not NaN, and a condition without any μ or
+/// with a negative or non-finite one is an InputError (the reference warns and uses 0, which silently ignored the
+/// process setting when the interface conditions had properties of their own).
 class ALMFastInit {
 public:
     /// @param[in,out] model_part the contact part (kept by reference; must outlive the process)

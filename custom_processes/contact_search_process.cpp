@@ -568,13 +568,11 @@ void ContactSearchProcess::CheckPairing() {
 void ContactSearchProcess::ComputeWeightedReaction() {
     const bool weighted_gap = mrMainModelPart.GetRootModelPart().HasNodalSolutionStepVariable(WEIGHTED_GAP);
     const bool weighted_slip = mrMainModelPart.GetRootModelPart().HasNodalSolutionStepVariable(WEIGHTED_SLIP);
-    const bool penalty = mTypeSolution == TypeSolution::FrictionlessPenaltyMethod ||
-                         mTypeSolution == TypeSolution::FrictionalPenaltyMethod;
     for (const auto& node : mpContactPart->Nodes()) {
         if (weighted_gap) node->FastGetSolutionStepValue(WEIGHTED_GAP) = 0.0;
         if (weighted_slip) node->FastGetSolutionStepValue(WEIGHTED_SLIP) = Array3::Zero();
-        // The penalty family accumulates NODAL_AREA itself in AddExplicitContribution.
-        if (penalty) node->SetValue(NODAL_AREA, 0.0);
+        node->SetValue(NODAL_AREA, 0.0);  // every family accumulates both in AddExplicitContribution
+        node->SetValue(AREA_WEIGHTED_PAIR_GAP, 0.0);
     }
     const ProcessInfo& process_info = mrMainModelPart.GetProcessInfo();
     for (const auto& pair : mpComputingPart->Conditions()) pair->AddExplicitContribution(process_info);

@@ -68,28 +68,32 @@ BaseMortarConvergenceCriteria::BaseMortarConvergenceCriteria(Family family, bool
 
 void BaseMortarConvergenceCriteria::UpdateNormalsAndTangents(ModelPart& rModelPart) const {
     if (mFamily == Family::MESH_TYING) return;
-    ModelPart* contact = ContactUtilities::FindContactPart(rModelPart, "Contact");
-    if (contact == nullptr) return;
+    if (ContactUtilities::FindContactPart(rModelPart, "Contact") == nullptr) return;
     UpdateContactNormals(rModelPart);
-    if (!IsFrictional()) return;
-    // Slip direction (held constant by the tangent): ALM from the tangential multiplier, penalty / pure slip from
-    // the weighted slip; the orthogonal fallback otherwise.
-    const bool from_multiplier = mFamily == Family::ALM_FRICTIONAL && !mPureSlip &&
+    // The pairs' weighted gaps and slips, and the nodal sums the residuals read, follow the new normals.
+    if (ModelPart* computing = ContactUtilities::FindContactPart(rModelPart, "ComputingContact"))
+        ContactUtilities::ComputeExplicitContributionConditions(*computing);
+    UpdateTangents(rModelPart);
+}
+
+void BaseMortarConvergenceCriteria::UpdateTangents(ModelPart& rModelPart) const {
+    ModelPart* contact = ContactUtilities::FindContactPart(rModelPart, "Contact");
+    if (!IsFrictional() || contact == nullptr) return;
+    // The slip direction of the trial traction (ActiveSetUtilities::TrialTangentialTraction); the conditions compute
+    // it themselves and use TANGENT_XI only where it vanishes, the set update compares it to detect a turning slip.
+    const bool with_multiplier = mFamily == Family::ALM_FRICTIONAL &&
                                  rModelPart.GetRootModelPart().HasNodalSolutionStepVariable(VECTOR_LAGRANGE_MULTIPLIER);
-    const bool has_slip = rModelPart.GetRootModelPart().HasNodalSolutionStepVariable(WEIGHTED_SLIP);
+    const ProcessInfo& info = rModelPart.GetProcessInfo();
     for (const auto& node : contact->Nodes()) {
         Array3 n = node->FastGetSolutionStepValue(NORMAL);
         if (n.norm() < kEps) continue;
         n.normalize();
         Array3 direction = Array3::Zero();
-        if (from_multiplier && node->Is(ACTIVE)) {
-            const Array3 lambda = node->FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER);
-            direction = lambda - lambda.dot(n) * n;
-        } else if (!from_multiplier && has_slip) {
-            const Array3 slip = node->FastGetSolutionStepValue(WEIGHTED_SLIP);
-            direction = slip - slip.dot(n) * n;
-        }
-        node->SetValue(TANGENT_XI, direction.norm() > kEps ? Array3(direction / direction.norm()) : OrthogonalUnit(n));
+        if (node->Is(ACTIVE) && node->Is(SLAVE))
+            direction = ActiveSetUtilities::TrialTangentialTraction(*node, info, with_multiplier);
+        node->SetValue(TANGENT_XI, direction.norm() > kEps * (1.0 + direction.norm())
+                                       ? Array3(direction / direction.norm())
+                                       : OrthogonalUnit(n));
     }
 }
 
@@ -106,7 +110,12 @@ bool BaseMortarConvergenceCriteria::PreCriteria(ModelPart& rModelPart, DofsArray
                                                 const SystemVectorType&, const SystemVectorType&) {
     const ProcessInfo& info = rModelPart.GetProcessInfo();
     const int normal_variation = info.Has(CONSIDER_NORMAL_VARIATION) ? info.GetValue(CONSIDER_NORMAL_VARIATION) : 0;
-    if (normal_variation != 0 || IsFrictional()) UpdateNormalsAndTangents(rModelPart);
+    // Normals move inside the step only with normal variation (kratos_residuals.md §1); the slip directions follow
+    // every iteration. Moving the normals of a stiff penalty interface each iteration kept its Newton from converging.
+    if (normal_variation != 0)
+        UpdateNormalsAndTangents(rModelPart);
+    else
+        UpdateTangents(rModelPart);
     if (info.Has(ADAPT_PENALTY) && info.GetValue(ADAPT_PENALTY))
         if (ModelPart* contact = ContactUtilities::FindContactPart(rModelPart, "Contact"))
             AALMAdaptPenaltyValueProcess(*contact).Execute();
@@ -131,15 +140,12 @@ bool BaseMortarConvergenceCriteria::PostCriteria(ModelPart& rModelPart, DofsArra
     ProcessInfo& info = rModelPart.GetProcessInfo();
     if (mFamily == Family::MESH_TYING) return true;
     ModelPart& root = rModelPart.GetRootModelPart();
-    ModelPart* computing = ContactUtilities::FindContactPart(rModelPart, "ComputingContact");
     ModelPart* contact = ContactUtilities::FindContactPart(rModelPart, "Contact");
     CONTACT_CHECK(contact != nullptr, InputError, FamilyName(mFamily), ": the model part ", root.FullName(),
                   " has no \"Contact\" sub model part\n  fix: add a contact process (alm_contact_process, ...) to the",
                   " processes of the analysis");
-    if (root.HasNodalSolutionStepVariable(WEIGHTED_GAP) && root.GetBufferSize() > 1)
-        for (const auto& node : contact->Nodes())
-            node->FastGetSolutionStepValue(WEIGHTED_GAP, 1) = node->FastGetSolutionStepValue(WEIGHTED_GAP);
-    if (computing != nullptr) ContactUtilities::ComputeExplicitContributionConditions(*computing);
+    // The weighted gaps and slips of this configuration were computed by the contact strategy after the update
+    // (ResidualBasedNewtonRaphsonContactStrategy::AfterSolutionUpdate), before the residual the criteria read.
 
     // The set utilities look for "Contact" under the model part they get and honour its INTERACTION flag.
     ModelPart& owner = contact->GetParentModelPart();
@@ -169,15 +175,47 @@ bool BaseMortarConvergenceCriteria::PostCriteria(ModelPart& rModelPart, DofsArra
             break;
     }
     CountSets(rModelPart);
+    if (mFamily == Family::ALM_FRICTIONAL) CountNonDissipative(*contact);
     info.SetValue(ACTIVE_SET_CONVERGED, mActiveFlips == 0);
     if (IsFrictional()) info.SetValue(SLIP_SET_CONVERGED, mSlipFlips == 0);
     return mActiveFlips == 0 && mSlipFlips == 0;
+}
+
+void BaseMortarConvergenceCriteria::CountNonDissipative(const ModelPart& rContact) {
+    mNonDissipativeNodes = 0;
+    for (const auto& node : rContact.Nodes()) {
+        if (!node->Is(SLAVE) || !node->Is(ACTIVE) || !node->Is(SLIP)) continue;
+        const Array3& traction = node->GetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE);
+        const Array3& slip = node->FastGetSolutionStepValue(WEIGHTED_SLIP);
+        // The friction on the slave follows the master's relative motion (+WEIGHTED_SLIP): λτ·ũτ ≥ 0.
+        if (traction.dot(slip) < -1e-12 * traction.norm() * slip.norm()) ++mNonDissipativeNodes;
+    }
+}
+
+void BaseMortarConvergenceCriteria::FinalizeSolutionStep(ModelPart& rModelPart, DofsArrayType&,
+                                                         const SparseMatrixType&, const SystemVectorType&,
+                                                         const SystemVectorType&) {
+    if (mFamily != Family::PENALTY_FRICTIONAL) return;
+    // Penalty friction carries its elastic (stick) slip to the next step: e = τ/(κε) of the converged traction.
+    ModelPart* contact = ContactUtilities::FindContactPart(rModelPart, "Contact");
+    if (contact == nullptr) return;
+    const ProcessInfo& info = rModelPart.GetProcessInfo();
+    const double tangent_factor = info.Has(TANGENT_FACTOR) ? info.GetValue(TANGENT_FACTOR) : 0.0;
+    for (const auto& node : contact->Nodes()) {
+        if (!node->Is(SLAVE)) continue;
+        const double stiffness = tangent_factor * (node->Has(INITIAL_PENALTY) ? node->GetValue(INITIAL_PENALTY)
+                                                                              : info.GetValue(INITIAL_PENALTY));
+        const bool carries = node->Is(ACTIVE) && stiffness > 0.0;
+        node->SetValue(TANGENT_SLIP, carries ? Array3(node->GetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE) / stiffness)
+                                             : Array3(Array3::Zero()));
+    }
 }
 
 std::string BaseMortarConvergenceCriteria::LastNorms() const {
     std::ostringstream out;
     out << "active " << mActiveNodes << " (" << mActiveFlips << " changed)";
     if (IsFrictional()) out << ", slip " << mSlipNodes << " (" << mSlipFlips << " changed)";
+    if (mNonDissipativeNodes > 0) out << ", " << mNonDissipativeNodes << " slip node(s) not dissipative";
     return out.str();
 }
 

@@ -15,12 +15,15 @@ void UpdateContactNormals(ModelPart& rModelPart);
 /// BaseMortarConvergenceCriteria and its family criteria, kratos_cpp_internals.md §9, kratos_residuals.md §6).
 /// It is combined with the user's criterion by AND: a step converges when the unknowns do and the sets stop
 /// changing.
-/// - InitializeSolutionStep: mean nodal normals of the "Contact" part, condition NORMALs of the pairs, tangents.
-/// - PreCriteria: the same when CONSIDER_NORMAL_VARIATION ≠ 0 (normals follow the deformation inside the step);
-///   adaptive penalty when ADAPT_PENALTY.
-/// - PostCriteria: WEIGHTED_GAP(1) := WEIGHTED_GAP, the weighted gap (and slip) recomputed by every pair's
-///   AddExplicitContribution, then the family's active-set update (ActiveSetUtilities); converged iff no flag
-///   changed. ACTIVE_SET_CONVERGED (and SLIP_SET_CONVERGED) are stored in the ProcessInfo.
+/// - InitializeSolutionStep: mean nodal normals of the "Contact" part, condition NORMALs of the pairs, the pairs'
+///   weighted gaps and slips with those normals, tangents.
+/// - PreCriteria: the same when CONSIDER_NORMAL_VARIATION ≠ 0 (normals follow the deformation inside the step),
+///   else the tangents alone; adaptive penalty when ADAPT_PENALTY.
+/// - PostCriteria: the family's active-set update (ActiveSetUtilities) on the weighted gaps and slips the contact
+///   strategy computed after the update; converged iff no flag changed and no slip direction turned.
+///   ACTIVE_SET_CONVERGED (and SLIP_SET_CONVERGED) are stored in the ProcessInfo. ALM friction also counts the
+///   slipping nodes whose traction is not dissipative (λτ·ũτ < 0), reported by LastNorms.
+/// - FinalizeSolutionStep (penalty friction): TANGENT_SLIP := τ/(κε), the elastic slip the next step starts from.
 /// The criteria find the parts by name under the root model part: "Contact" (slave nodes, skin conditions) and
 /// "ComputingContact" (the pairs).
 class BaseMortarConvergenceCriteria : public ConvergenceCriteria {
@@ -46,6 +49,8 @@ public:
     bool PostCriteria(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
                       const SystemVectorType& rDx, const SystemVectorType& rB,
                       const BuilderAndSolver& rBuilder) override;
+    void FinalizeSolutionStep(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
+                              const SystemVectorType& rDx, const SystemVectorType& rB) override;
     std::string LastNorms() const override;
     std::string Info() const override;
 
@@ -55,18 +60,24 @@ public:
     /// Active and slipping slave nodes after the last update.
     std::size_t ActiveNodes() const { return mActiveNodes; }
     std::size_t SlipNodes() const { return mSlipNodes; }
+    /// ALM friction: slipping nodes of the last update whose traction points against the slip (λτ·ũτ < 0).
+    std::size_t NonDissipativeNodes() const { return mNonDissipativeNodes; }
 
     /// Recomputes the nodal mean normals of "Contact", the NORMAL of every pair and, for the frictional families,
     /// the nodal slip direction TANGENT_XI (kratos_residuals.md §3.3.3). Public for the strategies and tests.
     void UpdateNormalsAndTangents(ModelPart& rModelPart) const;
+    /// Only the nodal slip directions TANGENT_XI of the frictional families.
+    void UpdateTangents(ModelPart& rModelPart) const;
 
 private:
     bool IsFrictional() const { return mFamily == Family::ALM_FRICTIONAL || mFamily == Family::PENALTY_FRICTIONAL; }
     void CountSets(ModelPart& rModelPart);
+    void CountNonDissipative(const ModelPart& rContact);
 
     Family mFamily;
     bool mPureSlip;
-    std::size_t mActiveFlips = 0, mSlipFlips = 0, mActiveNodes = 0, mSlipNodes = 0;
+    std::size_t mActiveFlips = 0, mSlipFlips = 0, mActiveNodes = 0, mSlipNodes = 0,
+                mNonDissipativeNodes = 0;
 };
 
 }  // namespace contact_app

@@ -39,10 +39,21 @@ void ResidualBasedNewtonRaphsonContactStrategy::Predict() {
     ComputeExplicitContributions();
 }
 
+void ResidualBasedNewtonRaphsonContactStrategy::BeforeReferenceResidual() {
+    ComputeExplicitContributions();
+}
+
 void ResidualBasedNewtonRaphsonContactStrategy::AfterSolutionUpdate() {
-    if (mIterations != 1 || !mSettings.move_mesh_flag) return;
     ModelPart* contact = ContactUtilities::FindContactPart(mModelPart, "Contact");
-    if (contact != nullptr) ComputeNodesMeanNormalModelPart(*contact, true);
+    if (contact == nullptr) return;
+    if (mIterations == 1 && mSettings.move_mesh_flag) ComputeNodesMeanNormalModelPart(*contact, true);
+    // The residual of the criteria and the set update read the weighted gaps of the updated configuration; the
+    // previous iteration's gap stays in WEIGHTED_GAP(1) for the adaptive penalty and the dynamic factor.
+    ModelPart& root = mModelPart.GetRootModelPart();
+    if (root.HasNodalSolutionStepVariable(WEIGHTED_GAP) && root.GetBufferSize() > 1)
+        for (const auto& node : contact->Nodes())
+            node->FastGetSolutionStepValue(WEIGHTED_GAP, 1) = node->FastGetSolutionStepValue(WEIGHTED_GAP);
+    ComputeExplicitContributions();
 }
 
 bool ResidualBasedNewtonRaphsonContactStrategy::SolveSolutionStep() {

@@ -41,6 +41,7 @@ protected:
     /// "Contact" are recomputed on the moved mesh, once, before the first PostCriteria. The reference strategy
     /// does this by calling the criteria's InitializeSolutionStep again at that point; without it the whole
     /// step keeps the normals of its start while the mortar operators are integrated on the current surface.
+    void BeforeReferenceResidual() override;
     void AfterSolutionUpdate() override;
 
 private:

@@ -7,6 +7,7 @@
 #include "contact_app/application.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/model_part.h"
+#include "custom_utilities/contact_utilities.h"
 
 namespace contact_app::ActiveSetUtilities {
 
@@ -70,9 +71,9 @@ std::size_t ComputePenaltyFrictionlessActiveSet(ModelPart& model_part) {
     const ProcessInfo& process_info = model_part.GetProcessInfo();
     std::size_t flips = 0;
     for (Node* node : SlaveNodesToUpdate(model_part)) {
-        const double augmented_normal = Penalty(*node, process_info) * NodalValue(*node, WEIGHTED_GAP);
-        node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, augmented_normal);
-        flips += UpdateActive(*node, augmented_normal < 0.0);
+        const double penalty = Penalty(*node, process_info);
+        node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, penalty * ContactUtilities::TransmittedWeightedGap(*node));
+        flips += UpdateActive(*node, penalty * NodalValue(*node, WEIGHTED_GAP) < 0.0);
     }
     return flips;
 }
@@ -83,8 +84,10 @@ std::size_t ComputeALMFrictionlessActiveSet(ModelPart& model_part) {
     std::size_t flips = 0;
     for (Node* node : SlaveNodesToUpdate(model_part)) {
         double& lambda = NodalValue(*node, LAGRANGE_MULTIPLIER_CONTACT_PRESSURE);
-        const double augmented_normal = k * lambda + Penalty(*node, process_info) * NodalValue(*node, WEIGHTED_GAP);
-        node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, augmented_normal);
+        const double penalty = Penalty(*node, process_info);
+        const double augmented_normal = k * lambda + penalty * NodalValue(*node, WEIGHTED_GAP);
+        node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE,
+                       k * lambda + penalty * ContactUtilities::TransmittedWeightedGap(*node));
         const bool active = augmented_normal < 0.0;
         if (active && node->IsNot(ACTIVE)) lambda = augmented_normal / k;
         flips += UpdateActive(*node, active);
@@ -99,9 +102,10 @@ std::size_t ComputeALMFrictionlessComponentsActiveSet(ModelPart& model_part) {
     for (Node* node : SlaveNodesToUpdate(model_part)) {
         Array3& lambda = NodalValue(*node, VECTOR_LAGRANGE_MULTIPLIER);
         const Array3 normal = NodalValue(*node, NORMAL);
-        const double augmented_normal =
-            k * normal.dot(lambda) + Penalty(*node, process_info) * NodalValue(*node, WEIGHTED_GAP);
-        node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, augmented_normal);
+        const double penalty = Penalty(*node, process_info);
+        const double augmented_normal = k * normal.dot(lambda) + penalty * NodalValue(*node, WEIGHTED_GAP);
+        node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE,
+                       k * normal.dot(lambda) + penalty * ContactUtilities::TransmittedWeightedGap(*node));
         const bool active = augmented_normal < 0.0;
         if (active && node->IsNot(ACTIVE)) lambda = normal * (augmented_normal / k);
         flips += UpdateActive(*node, active);
@@ -109,30 +113,57 @@ std::size_t ComputeALMFrictionlessComponentsActiveSet(ModelPart& model_part) {
     return flips;
 }
 
+namespace {
+
+/// Counts a slip node whose direction turned since the build (TANGENT_XI, set before it) as a slip-set change:
+/// Newton must not stop while the direction still turns (docs/theory/mortar.md §8).
+bool Turned(const Node& node, const Array3& direction) {
+    if (!node.Has(TANGENT_XI) || direction.norm() == 0.0) return false;
+    const Array3& previous = node.GetValue(TANGENT_XI);
+    return previous.norm() > 0.0 && (previous / previous.norm() - direction).norm() > kSlipDirectionTolerance;
+}
+
+}  // namespace
+
+Array3 TrialTangentialTraction(const Node& node, const ProcessInfo& process_info, bool with_multiplier) {
+    const double tangent_factor = process_info.Has(TANGENT_FACTOR) ? process_info.GetValue(TANGENT_FACTOR) : 0.0;
+    const double penalty = Penalty(node, process_info);
+    const Array3 normal = node.FastGetSolutionStepValue(NORMAL);
+    const auto tangential = [&normal](const Array3& v) { return Array3(v - normal.dot(v) * normal); };
+    Array3 slip = node.SolutionStepsDataHas(WEIGHTED_SLIP) ? node.FastGetSolutionStepValue(WEIGHTED_SLIP)
+                                                            : Array3(Array3::Zero());
+    if (!with_multiplier) slip += node.GetValue(TANGENT_SLIP);  // penalty: the elastic slip of earlier steps
+    Array3 trial = tangent_factor * penalty * tangential(slip);
+    if (with_multiplier)
+        trial += process_info.GetValue(SCALE_FACTOR) * tangential(node.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER));
+    return trial;
+}
+
 std::array<std::size_t, 2> ComputePenaltyFrictionalActiveSet(ModelPart& model_part, bool pure_slip) {
     const ProcessInfo& process_info = model_part.GetProcessInfo();
-    const double tangent_factor = process_info.GetValue(TANGENT_FACTOR);
     std::array<std::size_t, 2> flips{0, 0};
     for (Node* node : SlaveNodesToUpdate(model_part)) {
         const double penalty = Penalty(*node, process_info);
-        const double augmented_normal = penalty * NodalValue(*node, WEIGHTED_GAP);
-        node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, augmented_normal);
-        Array3& weighted_slip = NodalValue(*node, WEIGHTED_SLIP);
-        const bool active = augmented_normal < 0.0;
+        const double transmitted_normal = penalty * ContactUtilities::TransmittedWeightedGap(*node);
+        node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, transmitted_normal);
+        const bool active = penalty * NodalValue(*node, WEIGHTED_GAP) < 0.0;
         flips[0] += UpdateActive(*node, active);
         if (!active) {  // the deactivation is the counted change; the stick/slip state is just reset
-            weighted_slip.setZero();
+            NodalValue(*node, WEIGHTED_SLIP).setZero();
+            node->SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE, Array3(Array3::Zero()));
             node->Set(SLIP, pure_slip);
             continue;
         }
         const double mu = node->GetValue(FRICTION_COEFFICIENT);
-        Array3 augmented_tangent = tangent_factor * penalty * weighted_slip;
-        const bool slip = pure_slip || augmented_tangent.norm() > -mu * augmented_normal;
-        // Slip traction along ũτ, as the stick one (the reference flips its sign: [BUG?] B10).
-        if (slip) augmented_tangent = -mu * augmented_normal * Direction(weighted_slip);
-        node->SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE, augmented_tangent);
+        const Array3 trial = TrialTangentialTraction(*node, process_info, false);
+        const bool was_slip = node->Is(SLIP);
+        const bool slip = pure_slip || trial.norm() > -mu * transmitted_normal;
+        // Slip traction along the trial, as the stick one (the reference flips its sign: [BUG?] B10).
+        node->SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE,
+                       slip ? Array3(-mu * transmitted_normal * Direction(trial)) : trial);
         const std::size_t changed = UpdateSlip(*node, slip);
         if (!pure_slip) flips[1] += changed;
+        if (slip && was_slip && Turned(*node, Direction(trial))) ++flips[1];
     }
     return flips;
 }
@@ -140,47 +171,41 @@ std::array<std::size_t, 2> ComputePenaltyFrictionalActiveSet(ModelPart& model_pa
 std::array<std::size_t, 2> ComputeALMFrictionalActiveSet(ModelPart& model_part, bool pure_slip) {
     const ProcessInfo& process_info = model_part.GetProcessInfo();
     const double k = ScaleFactor(process_info, "ComputeALMFrictionalActiveSet");
-    const double tangent_factor = process_info.GetValue(TANGENT_FACTOR);
-    const double slip_augmentation = process_info.GetValue(SLIP_AUGMENTATION_COEFFICIENT);
     const double slip_threshold = process_info.GetValue(SLIP_THRESHOLD);
     std::array<std::size_t, 2> flips{0, 0};
     for (Node* node : SlaveNodesToUpdate(model_part)) {
         const double penalty = Penalty(*node, process_info);
         Array3& lambda = NodalValue(*node, VECTOR_LAGRANGE_MULTIPLIER);
-        Array3& weighted_slip = NodalValue(*node, WEIGHTED_SLIP);
         const Array3 normal = NodalValue(*node, NORMAL);
-        const double lambda_normal = normal.dot(lambda);
-        const Array3 lambda_tangent = lambda - lambda_normal * normal;
-        const double augmented_normal = k * lambda_normal + penalty * NodalValue(*node, WEIGHTED_GAP);
-        node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, augmented_normal);
-        const bool was_slip = node->Is(SLIP);
-        const double c = was_slip ? slip_augmentation : 1.0;
-        const Array3 augmented_tangent = k * lambda_tangent + c * tangent_factor * penalty * weighted_slip;
+        const double augmented_normal = k * normal.dot(lambda) + penalty * NodalValue(*node, WEIGHTED_GAP);
+        // The normal traction the pairs transmit bounds the friction (docs/theory/mortar.md §7).
+        const double transmitted_normal =
+            k * normal.dot(lambda) + penalty * ContactUtilities::TransmittedWeightedGap(*node);
+        node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, transmitted_normal);
+        const Array3 trial = TrialTangentialTraction(*node, process_info, true);
         const bool active = augmented_normal < 0.0;
         if (!active) {  // the deactivation is the counted change; the stick/slip state is just reset
-            weighted_slip.setZero();
+            NodalValue(*node, WEIGHTED_SLIP).setZero();
+            node->SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE, Array3(Array3::Zero()));
             flips[0] += UpdateActive(*node, false);
             node->Set(SLIP, pure_slip);
             continue;
         }
         const double mu = node->GetValue(FRICTION_COEFFICIENT);
         if (node->IsNot(ACTIVE))
-            lambda = normal * (augmented_normal / k) + (mu < kMachineEpsilon ? Array3(Array3::Zero())
-                                                                              : Array3(augmented_tangent / k));
+            lambda = normal * (augmented_normal / k) + (mu < kMachineEpsilon ? Array3(Array3::Zero()) : Array3(trial / k));
         flips[0] += UpdateActive(*node, true);
-        // Coulomb test with hysteresis. A frictionless node slips (the test would be 0/0 and flip between states).
+        // Coulomb test on the trial traction (the semi-smooth Newton of the slip law the conditions use), with
+        // hysteresis. A frictionless node slips (the test would be 0/0 and flip between states).
+        const bool was_slip = node->Is(SLIP);
         const double threshold = was_slip ? 1.0 - slip_threshold : 1.0;
-        const bool slip = pure_slip || mu < kMachineEpsilon ||
-                          augmented_tangent.norm() / (-mu * augmented_normal) > threshold;
-        if (slip) {
-            // Along λτ as the reference; when λτ vanishes (first activation) along λ̄τ instead of NaN.
-            const Array3 direction = lambda_tangent.norm() > 0.0 ? Direction(lambda_tangent) : Direction(augmented_tangent);
-            node->SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE, Array3(-mu * augmented_normal * direction));
-        } else {
-            node->SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE, augmented_tangent);
-        }
+        const bool slip =
+            pure_slip || mu < kMachineEpsilon || trial.norm() > -mu * transmitted_normal * threshold;
+        node->SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE,
+                       slip ? Array3(-mu * transmitted_normal * Direction(trial)) : trial);
         const std::size_t changed = UpdateSlip(*node, slip);
         if (!pure_slip) flips[1] += changed;
+        if (slip && was_slip && mu >= kMachineEpsilon && Turned(*node, Direction(trial))) ++flips[1];
     }
     return flips;
 }

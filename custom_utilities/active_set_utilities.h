@@ -4,9 +4,12 @@
 #include <array>
 #include <cstddef>
 
+#include "contact_app/kernel/node.h"
+
 namespace contact_app {
 
 class ModelPart;
+class ProcessInfo;
 
 /// Semi-smooth Newton active-set and stick/slip updates of the mortar contact families (Kratos
 /// ActiveSetUtilities, kratos_cpp_internals.md §5.3, kratos_residuals.md §6). Each function evaluates the
@@ -15,12 +18,22 @@ class ModelPart;
 /// non-historical values and returns the number of flips (0 = the set converged). Nothing is evaluated (0 is
 /// returned) unless @p model_part Is(INTERACTION) (full semi-smooth Newton) or NL_ITERATION_NUMBER == 1.
 /// Inputs: k = ProcessInfo SCALE_FACTOR, ε = nodal INITIAL_PENALTY if the node has it else the ProcessInfo one,
-/// g̃ = WEIGHTED_GAP, ũτ = WEIGHTED_SLIP, n = NORMAL, μ = nodal FRICTION_COEFFICIENT, κ = TANGENT_FACTOR,
-/// SLIP_AUGMENTATION_COEFFICIENT and SLIP_THRESHOLD (ProcessInfo, default 0). Comparisons are strict ("< 0").
-/// Deviations: the penalty slip traction has the orientation of its stick value (reference [BUG?] B10); a slip
-/// traction with a zero tangential multiplier follows λ̄τ instead of being NaN; an ALM node with μ < machine ε
+/// g̃ = WEIGHTED_GAP, ũτ = WEIGHTED_SLIP, n = NORMAL, μ = nodal FRICTION_COEFFICIENT, κ = TANGENT_FACTOR and
+/// SLIP_THRESHOLD (ProcessInfo, default 0). Comparisons are strict ("< 0").
+/// Deviations (docs/theory/mortar.md §8): the stick/slip test and the slip direction use the trial traction λ̄τ of
+/// TrialTangentialTraction on every node (the reference scales its slip term by SLIP_AUGMENTATION_COEFFICIENT, 0 by
+/// default, on slipping nodes, and takes the direction from λτ alone, which never turns in 3D); a slip node whose
+/// direction turned by more than kSlipDirectionTolerance since the build counts as a slip-set change; the penalty
+/// slip traction has the orientation of its stick value (reference [BUG?] B10); an ALM node with μ < machine ε
 /// always slips (the reference's Coulomb test is 0/0 there and the node flips between stick and slip).
 namespace ActiveSetUtilities {
+
+/// |t_new − t_build| (unit vectors) above which a slipping node has turned (radians, ≈ 0.006°).
+inline constexpr double kSlipDirectionTolerance = 1e-4;
+
+/// The trial tangential traction of a slave node: λ̄τ = k Pλ + κ ε P ũτ (ALM, @p with_multiplier) or
+/// κ ε P(ũτ + e) (penalty, e = TANGENT_SLIP the elastic weighted slip carried over from earlier steps).
+Array3 TrialTangentialTraction(const Node& node, const ProcessInfo& process_info, bool with_multiplier);
 
 /// @brief λ̄n = ε g̃; ACTIVE ⇔ λ̄n < 0. @return the number of nodes whose ACTIVE flag changed
 std::size_t ComputePenaltyFrictionlessActiveSet(ModelPart& model_part);
@@ -30,14 +43,14 @@ std::size_t ComputeALMFrictionlessActiveSet(ModelPart& model_part);
 /// @brief λ̄n = k n·λ + ε g̃ (λ = VECTOR_LAGRANGE_MULTIPLIER); on activation λ := n λ̄n / k.
 /// @return the number of ACTIVE flips
 std::size_t ComputeALMFrictionlessComponentsActiveSet(ModelPart& model_part);
-/// @brief Penalty frictional: λ̄n = ε g̃; active nodes: λ̄τ = κ ε ũτ, stick ⇔ |λ̄τ| ≤ −μ λ̄n, slip traction
-///        −μ λ̄n ũτ/|ũτ|; inactive nodes: ũτ := 0, SLIP reset. @param[in] pure_slip every active node slips
+/// @brief Penalty frictional: λ̄n = ε g̃; active nodes: λ̄τ = κ ε P(ũτ + e), stick ⇔ |λ̄τ| ≤ −μ λ̄n, slip traction
+///        −μ λ̄n λ̄τ/|λ̄τ|; inactive nodes: ũτ := 0, SLIP reset. @param[in] pure_slip every active node slips
 /// @return {ACTIVE flips, SLIP flips} (slip flips are not counted in pure slip)
 std::array<std::size_t, 2> ComputePenaltyFrictionalActiveSet(ModelPart& model_part, bool pure_slip = false);
-/// @brief ALM frictional: λ̄n = k n·λ + ε g̃, λ̄τ = k λτ + c κ ε ũτ (c = SLIP_AUGMENTATION_COEFFICIENT on slipping
-///        nodes, else 1); on activation λ := n λ̄n/k + λ̄τ/k (λ̄τ dropped when μ < machine ε); slip ⇔
-///        μ < machine ε (a frictionless node cannot stick) or |λ̄τ| / (−μ λ̄n) > 1 − SLIP_THRESHOLD (slipping
-///        node) or > 1 (sticking node); slip traction −μ λ̄n λτ/|λτ|; inactive nodes: ũτ := 0, SLIP reset.
+/// @brief ALM frictional: λ̄n = k n·λ + ε g̃, λ̄τ = k Pλ + κ ε ũτ; on activation λ := n λ̄n/k + λ̄τ/k (λ̄τ dropped
+///        when μ < machine ε); slip ⇔ μ < machine ε (a frictionless node cannot stick) or |λ̄τ| / (−μ λ̄n) >
+///        1 − SLIP_THRESHOLD (slipping node) or > 1 (sticking node); slip traction −μ λ̄n λ̄τ/|λ̄τ|; inactive nodes:
+///        ũτ := 0, SLIP reset.
 ///        @param[in] pure_slip every active node slips
 /// @return {ACTIVE flips, SLIP flips}
 std::array<std::size_t, 2> ComputeALMFrictionalActiveSet(ModelPart& model_part, bool pure_slip = false);

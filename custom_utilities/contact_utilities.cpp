@@ -33,6 +33,13 @@ double ContactUtilities::NodalH(const Node& node) {
     return node.SolutionStepsDataHas(NODAL_H) ? node.FastGetSolutionStepValue(NODAL_H) : node.GetValue(NODAL_H);
 }
 
+double ContactUtilities::TransmittedWeightedGap(const Node& node) {
+    const double area = node.GetValue(NODAL_AREA);
+    const double gap = node.SolutionStepsDataHas(WEIGHTED_GAP) ? node.FastGetSolutionStepValue(WEIGHTED_GAP)
+                                                               : node.GetValue(WEIGHTED_GAP);
+    return area > 0.0 ? node.GetValue(AREA_WEIGHTED_PAIR_GAP) / area : gap;
+}
+
 double ContactUtilities::CalculateMaxNodalH(const ModelPart& model_part) {
     double result = 0.0;
     for (const auto& node : model_part.Nodes()) result = std::max(result, NodalH(*node));
@@ -130,6 +137,7 @@ void ContactUtilities::ComputeExplicitContributionConditions(ModelPart& model_pa
             ZeroNodal(geometry[i], WEIGHTED_GAP);
             ZeroNodal(geometry[i], WEIGHTED_SLIP);
             geometry[i].SetValue(NODAL_AREA, 0.0);
+            geometry[i].SetValue(AREA_WEIGHTED_PAIR_GAP, 0.0);
         }
     }
     const ProcessInfo& process_info = model_part.GetProcessInfo();

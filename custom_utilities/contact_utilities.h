@@ -18,6 +18,9 @@ class ContactUtilities {
 public:
     /// @brief NODAL_H of @p node: historical if stored, else the non-historical value (0 when absent).
     static double NodalH(const Node& node);
+    /// @brief Q = AREA_WEIGHTED_PAIR_GAP / NODAL_AREA, the weighted gap the pairs' augmentation transmits to a slave
+    ///        node (docs/theory/mortar.md §7); WEIGHTED_GAP where the node has no area.
+    static double TransmittedWeightedGap(const Node& node);
     /// @brief Largest NODAL_H of the nodes of @p model_part (0 for an empty part).
     static double CalculateMaxNodalH(const ModelPart& model_part);
     /// @brief Arithmetic mean of NODAL_H over the nodes of @p model_part (0 for an empty part).

@@ -20,8 +20,34 @@ template <int TDim, int TNN>
 NodeCoordinates<double, TDim, TNN> CurrentCoordinates(const Geometry& geometry) {
     CheckNodeCount(geometry, TNN);
     NodeCoordinates<double, TDim, TNN> x;
+    for (int k = 0; k < TNN; ++k) {
+        const Node& node = geometry[k];
+        // X0 + u even when the mesh is not moved (move_mesh_flag false): the contact kinematics follow the
+        // displacement, as the reference's X1 + u1 split does.
+        const Array3 position = node.SolutionStepsDataHas(DISPLACEMENT)
+                                    ? Array3(node.InitialCoordinates() + node.FastGetSolutionStepValue(DISPLACEMENT))
+                                    : node.Coordinates();
+        x.row(k) = position.head<TDim>().transpose();
+    }
+    return x;
+}
+
+template <int TDim, int TNN>
+NodeCoordinates<double, TDim, TNN> MeshCoordinates(const Geometry& geometry) {
+    CheckNodeCount(geometry, TNN);
+    NodeCoordinates<double, TDim, TNN> x;
     for (int k = 0; k < TNN; ++k) x.row(k) = geometry[k].Coordinates().head<TDim>().transpose();
     return x;
+}
+
+bool MeshFollowsDisplacement(const Geometry& geometry) {
+    for (std::size_t k = 0; k < geometry.size(); ++k) {
+        const Node& node = geometry[k];
+        if (!node.SolutionStepsDataHas(DISPLACEMENT)) continue;
+        const Array3 expected = node.InitialCoordinates() + node.FastGetSolutionStepValue(DISPLACEMENT);
+        if ((node.Coordinates() - expected).norm() > 1e-12 * (1.0 + expected.norm())) return false;
+    }
+    return true;
 }
 
 template <int TDim, int TNN>
@@ -45,6 +71,7 @@ NodeCoordinates<double, TDim, TNN> NodalNormals(const Geometry& geometry) {
 
 #define CONTACT_APP_INSTANTIATE_ADAPTERS(D, NN)                                                          \
     template NodeCoordinates<double, D, NN> CurrentCoordinates<D, NN>(const Geometry&);                  \
+    template NodeCoordinates<double, D, NN> MeshCoordinates<D, NN>(const Geometry&);                     \
     template NodeCoordinates<double, D, NN> CoordinatesAtStep<D, NN>(const Geometry&, std::size_t);     \
     template NodeCoordinates<double, D, NN> NodalNormals<D, NN>(const Geometry&);
 CONTACT_APP_INSTANTIATE_ADAPTERS(2, 2)

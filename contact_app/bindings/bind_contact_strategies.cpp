@@ -60,6 +60,8 @@ void BindContactStrategies(py::module_& m) {
     mortar.def(py::init<Mortar::Family, bool>(), py::arg("family"), py::arg("pure_slip") = false)
         .def("ActiveNodes", &Mortar::ActiveNodes, "Active slave nodes after the last update.")
         .def("SlipNodes", &Mortar::SlipNodes, "Active slipping slave nodes after the last update.")
+        .def("NonDissipativeNodes", &Mortar::NonDissipativeNodes,
+             "ALM friction: slipping nodes of the last update whose traction points against the slip.")
         .def("LastActiveFlips", &Mortar::LastActiveFlips)
         .def("LastSlipFlips", &Mortar::LastSlipFlips)
         .def("UpdateNormalsAndTangents", &Mortar::UpdateNormalsAndTangents, py::arg("model_part"));

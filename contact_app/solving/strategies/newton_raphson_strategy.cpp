@@ -30,6 +30,7 @@ void NewtonRaphsonStrategy::Initialize() {
 
 void NewtonRaphsonStrategy::InitializeSolutionStep() {
     SolvingStrategy::InitializeSolutionStep();
+    BeforeReferenceResidual();
     // The residual reference is taken before Predict, as Kratos does.
     if (mCriteria->GetActualizeRHSflag()) mBuilder->BuildRHS(*mScheme, mModelPart, mB);
     mCriteria->InitializeSolutionStep(mModelPart, mBuilder->GetDofSet(), mA, mDx, mB, *mBuilder);

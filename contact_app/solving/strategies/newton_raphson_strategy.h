@@ -34,9 +34,13 @@ public:
 protected:
     /// Updates the unknowns with Δx (line search overrides it).
     virtual void UpdateSolution();
-    /// Called after the update of an iteration whose PreCriteria passed, just before PostCriteria (contact
-    /// strategies refresh their normals there). Does nothing by default.
+    /// Called after the update of an iteration whose PreCriteria passed, just before the residual of the criteria
+    /// and PostCriteria (contact strategies refresh their normals and nodal weighted gaps there). Does nothing by
+    /// default.
     virtual void AfterSolutionUpdate() {}
+    /// Called after the entities' InitializeSolutionStep, before the step's reference residual: data the residual
+    /// reads besides the unknowns (contact: the nodal weighted gaps of new pairs). Does nothing by default.
+    virtual void BeforeReferenceResidual() {}
     /// One Newton iteration: build, solve, update, move mesh, hooks. Returns the criterion's verdict.
     bool Iterate();
 

@@ -257,6 +257,12 @@ SavedPrevious ReadPrevious(const PairedCondition& pair) {
     in.Load("FlagsDefined", defined);
     in.Load("FlagsValues", values);
     in.Load("PairedNormal", normal);
+    bool valid = false;
+    Matrix area, gap, slip;
+    in.Load("NodalShareValid", valid);
+    in.Load("NodalShareArea", area);
+    in.Load("NodalShareGap", gap);
+    in.Load("NodalShareSlip", slip);
     SavedPrevious p;
     in.Load("PreviousMortarOperatorsInitialized", p.initialized);
     in.Load("PreviousMortarOperatorsOverlap", p.overlap);
@@ -469,7 +475,8 @@ TEST_P(FrictionalMortarNames, CheckAndAssemblyFailuresExplainTheFix) {
         std::mt19937 rng(5);
         auto sliding = MakeSlidingPair(model, GetParam(), rng, {2}, 1e-3);
         EXPECT_EQ(sliding.pair->Check(sliding.info), 0);
-        // κ needed by a stick node (ALM also by inactive ones) but TANGENT_FACTOR missing.
+        // κ needed by every active node (the stick penalty, the slip trial traction; ALM also inactive ones) but
+        // TANGENT_FACTOR missing.
         ProcessInfo no_kappa;  // the same values without TANGENT_FACTOR
         no_kappa.SetValue(SCALE_FACTOR, sliding.info.GetValue(SCALE_FACTOR));
         no_kappa.SetValue(OPERATOR_THRESHOLD, sliding.info.GetValue(OPERATOR_THRESHOLD));
@@ -485,10 +492,15 @@ TEST_P(FrictionalMortarNames, CheckAndAssemblyFailuresExplainTheFix) {
             no_scale.SetValue(TANGENT_FACTOR, sliding.info.GetValue(TANGENT_FACTOR));
             EXPECT_THROW(sliding.pair->CalculateRightHandSide(rhs, no_scale), InputError);
         }
-        // All slip: κ not needed by the penalty family.
+        // All slip: κ still needed (the slip direction is that of the trial traction, docs/theory/mortar.md §8).
         auto& slave = const_cast<Geometry&>(sliding.pair->GetParentGeometry());
         for (std::size_t j = 0; j < slave.size(); ++j) SetNodeState(slave[j], 1);
-        if (IsPenalty(row)) EXPECT_NO_THROW(sliding.pair->CalculateRightHandSide(rhs, no_kappa));
+        try {
+            sliding.pair->CalculateRightHandSide(rhs, no_kappa);
+            ADD_FAILURE() << "no error without TANGENT_FACTOR in slip";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("(slip) uses it"), std::string::npos) << e.what();
+        }
         slave[0].SetValue(INITIAL_PENALTY, 0.0);
         EXPECT_THROW(sliding.pair->CalculateRightHandSide(rhs, sliding.info), InputError);
     }
@@ -654,6 +666,7 @@ TEST_P(FrictionalMortarFlatPair, SlipTractionIsMuTimesTheNormalPressure) {
     auto pair = FlatPair(model, GetParam(), g);
     ProcessInfo info;
     info.SetValue(SCALE_FACTOR, k);
+    info.SetValue(TANGENT_FACTOR, 0.5);  // the slip direction of the trial traction needs κ; no slip here, so t
     auto& slave = const_cast<Geometry&>(pair->GetParentGeometry());
     std::vector<double> augmented(row.num_slave);
     Vector gaps = Vector::Zero(row.num_slave);

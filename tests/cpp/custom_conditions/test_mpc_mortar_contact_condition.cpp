@@ -388,6 +388,12 @@ TEST(MPCMortarContactCondition, SlipRightHandSideIsTheCoulombForceAlongTheTangen
     }
 }
 
+/// Moves a node as the solver does: displacement and (moved mesh) coordinates; the contact reads X0 + u.
+void Move(Node& node, int component, double delta) {
+    node.Coordinates()[component] += delta;
+    node.FastGetSolutionStepValue(DISPLACEMENT)[component] += delta;
+}
+
 TEST(MPCMortarContactCondition, ExplicitContributionAddsWeightedGapAreaAndSlip) {
     MPCPair p(Kind("2D2N"));
     ProcessInfo info;
@@ -395,7 +401,7 @@ TEST(MPCMortarContactCondition, ExplicitContributionAddsWeightedGapAreaAndSlip) 
     // Master moved by g along the slave normal: g̃_j = D_jj g with D_jj = ½ (dual basis on a unit segment).
     const double g = 0.03;
     for (std::size_t j = 0; j < 2; ++j) {
-        p.Master()[j].Coordinates()[1] += g * n_y;
+        Move(p.Master()[j], 1, g * n_y);
         p.Slave()[j].SetValue(NODAL_AREA, 0.0);
     }
     p.pair->AddExplicitContribution(info);
@@ -407,7 +413,7 @@ TEST(MPCMortarContactCondition, ExplicitContributionAddsWeightedGapAreaAndSlip) 
     // SLIP: previous operators at the start, then the master slides tangentially.
     p.pair->Set(SLIP, true);
     p.pair->Initialize(info);
-    for (std::size_t j = 0; j < 2; ++j) p.Master()[j].Coordinates()[0] += 0.1;
+    for (std::size_t j = 0; j < 2; ++j) Move(p.Master()[j], 0, 0.1);
     p.pair->AddExplicitContribution(info);
     for (std::size_t j = 0; j < 2; ++j) {
         const Array3 slip = p.Slave()[j].FastGetSolutionStepValue(WEIGHTED_SLIP);

@@ -497,12 +497,20 @@ TEST(ContactSearch, ActivationByGapAgainstL) {
 }
 
 TEST(ContactSearch, ActiveNodesStayActiveBySmallWeightedGap) {
-    // Gap 0.002 > L: a new node stays inactive; an already ACTIVE node with g̃/NODAL_AREA < L stays active
-    // (advanced rule), but not with simple_search.
+    // The master bulges over slave node x = 0.6 (mapped gap 0.0011 > L = 1e-3) but touches around it, so its weighted
+    // gap per area g̃/NODAL_AREA (dual basis, both from the pairs) ≈ 8e-4 < L: an already ACTIVE node stays active
+    // (advanced rule), but not with simple_search. Over x ≤ 0.45 the master stays 0.002
+    // away: the inactive node x = 0.4 stays inactive.
     for (const bool simple : {false, true}) {
         SearchModel m;
         const auto slaves = m.Line(Array3(1, 0, 0), Array3(0, 0, 0), 10, true, 0.1);
-        m.Line(Array3(0, 0.002, 0), Array3(1, 0.002, 0), 10, false, 0.1);
+        std::vector<IndexType> master;
+        for (int i = 0; i <= 20; ++i) {
+            const double x = 0.05 * i;
+            const double y = x < 0.451 ? 0.002 : std::abs(x - 0.6) < 1e-9 ? 0.0011 : 0.0;
+            master.push_back(m.AddNode(x, y, 0.0, 0.1).Id());
+        }
+        for (int i = 0; i < 20; ++i) m.AddFace({master[i], master[i + 1]}, false);
         ContactSearchSettings settings = Settings("in_radius", "check_mapping");
         settings.condition_name = "ALMFrictionlessMortarContact";
         settings.simple_search = simple;
@@ -510,10 +518,14 @@ TEST(ContactSearch, ActiveNodesStayActiveBySmallWeightedGap) {
         search.ExecuteInitialize();
         Node& was_active = m.main->GetCondition(slaves[4]).GetGeometry()[0];
         Node& was_inactive = m.main->GetCondition(slaves[6]).GetGeometry()[0];
+        ASSERT_NEAR(was_active.X(), 0.6, 1e-12);
+        ASSERT_NEAR(was_inactive.X(), 0.4, 1e-12);
+        for (const auto& node : m.contact->Nodes()) node->SetValue(INITIAL_PENALTY, 1.0);
         was_active.Set(ACTIVE, true);
-        for (Node* node : {&was_active, &was_inactive}) node->SetValue(NODAL_AREA, 1e3);  // g̃/area ≪ L
         search.ExecuteInitializeSolutionStep();
-        EXPECT_GT(was_active.FastGetSolutionStepValue(WEIGHTED_GAP), 0.0);  // computed by the pairs
+        const double area = was_active.GetValue(NODAL_AREA);
+        ASSERT_GT(area, 0.0);
+        EXPECT_LT(was_active.FastGetSolutionStepValue(WEIGHTED_GAP) / area, 1e-3);  // computed by the pairs
         EXPECT_EQ(was_active.Is(ACTIVE), !simple);
         EXPECT_FALSE(was_inactive.Is(ACTIVE));
     }
@@ -638,7 +650,10 @@ TEST(ContactSearch, MPCCreatesOneConstraintPerPair) {
     search.ExecuteFinalizeSolutionStep();
     for (const auto& node : m.contact->Nodes()) {
         node->Set(MARKER, false);
-        if (node->Is(MASTER)) node->Coordinates()[1] = 0.2;
+        if (node->Is(MASTER)) {  // moved as the solver moves a node: displacement and mesh coordinates
+            node->FastGetSolutionStepValue(DISPLACEMENT_Y) = 0.2 - node->InitialCoordinates()[1];
+            node->Coordinates()[1] = 0.2;
+        }
     }
     search.ExecuteInitializeSolutionStep();
     search.ExecuteFinalizeSolutionStep();

@@ -84,7 +84,9 @@ TEST(ContactUtilities, test_explicit_refresh_of_the_weighted_gap_of_a_pair) {
     ContactUtilities::ComputeExplicitContributionConditions(part);
     for (IndexType id : {1, 2}) {
         EXPECT_NEAR(part.GetNode(id).FastGetSolutionStepValue(WEIGHTED_GAP), 0.5 * g, 1e-14);  // g ∫N_j over length 1
-        EXPECT_EQ(part.GetNode(id).GetValue(NODAL_AREA), 0.0);  // not produced by the ALM family
+        EXPECT_NEAR(part.GetNode(id).GetValue(NODAL_AREA), 0.5, 1e-14);  // ∫N_j of the pair, every family
+        EXPECT_NEAR(part.GetNode(id).GetValue(AREA_WEIGHTED_PAIR_GAP), 0.25 * g, 1e-14);
+        EXPECT_NEAR(ContactUtilities::TransmittedWeightedGap(part.GetNode(id)), 0.5 * g, 1e-14);
     }
     part.GetNode(1).Set(ACTIVE, true);
     ContactUtilities::ActivateConditionWithActiveNodes(part);

@@ -72,6 +72,9 @@ class StepState:
     coulomb_ratios: np.ndarray  # |AUGMENTED_TANGENT| / |AUGMENTED_NORMAL| per active node
     max_normal_x: float  # max |NORMAL_X| over the active nodes
     max_normal_y: float  # 3D: max |NORMAL_Y| over the active nodes (0 in 2D)
+    max_traction_slip_angle: float = 0.0  # degrees, over the slipping nodes
+    min_traction_slip_power: float = 1.0  # min of t.s / (|t| |s|) over the slipping nodes
+    max_slip_x_angle: float = 0.0  # degrees between WEIGHTED_SLIP and the x axis
 
 
 def _current_area(nodes: list) -> float:
@@ -124,6 +127,16 @@ class _SteppedAnalysis(StructuralMechanicsAnalysis):
             / abs(n.GetValue(ca.AUGMENTED_NORMAL_CONTACT_PRESSURE))
             for n in active
         ]
+        angles, powers, slip_x = [0.0], [1.0], [0.0]
+        for node in active:
+            if not node.Is(ca.SLIP):
+                continue
+            traction = np.array(node.GetValue(ca.AUGMENTED_TANGENT_CONTACT_PRESSURE))
+            slip = np.array(node.GetSolutionStepValue(ca.WEIGHTED_SLIP))
+            cosine = traction @ slip / (np.linalg.norm(traction) * np.linalg.norm(slip))
+            angles.append(float(np.degrees(np.arccos(np.clip(cosine, -1.0, 1.0)))))
+            powers.append(float(cosine))
+            slip_x.append(float(np.degrees(np.arccos(abs(slip[0]) / np.linalg.norm(slip)))))
         vertical = ca.REACTION_Z if self.dimension == 3 else ca.REACTION_Y
         self.states.append(
             StepState(
@@ -139,6 +152,9 @@ class _SteppedAnalysis(StructuralMechanicsAnalysis):
                 slipping=sum(n.Is(ca.SLIP) for n in active),
                 slave_nodes=len(slave),
                 coulomb_ratios=np.array(ratios),
+                max_traction_slip_angle=max(angles),
+                min_traction_slip_power=min(powers),
+                max_slip_x_angle=max(slip_x),
                 max_normal_x=max(abs(n.GetSolutionStepValue(ca.NORMAL_X)) for n in active),
                 max_normal_y=(
                     max(abs(n.GetSolutionStepValue(ca.NORMAL_Y)) for n in active)
@@ -223,7 +239,7 @@ def _write_materials(directory: Path, mu: float, law: str) -> None:
     (directory / "materials.json").write_text(json.dumps({"properties": materials}))
 
 
-def _parameters(directory: Path, mortar_type: str, dimension: int) -> dict:
+def _parameters(directory: Path, mortar_type: str, dimension: int, move_mesh: bool = True) -> dict:
     contact_type = "FrictionalPureSlip" if mortar_type.endswith("PureSlip") else "Frictional"
     slides = SLIDES_3D if dimension == 3 else SLIDES
     # Piecewise linear in time through slides[k - 1] at t = k.
@@ -247,6 +263,7 @@ def _parameters(directory: Path, mortar_type: str, dimension: int) -> dict:
             "echo_level": 0,
             "analysis_type": "non_linear",
             "buffer_size": 3,
+            "move_mesh_flag": move_mesh,
             "model_import_settings": {
                 "input_type": "mdpa",
                 "input_filename": str(directory / "stick_slip"),
@@ -336,6 +353,7 @@ def run_stick_slip(
     mortar_type: str = "ALMContactFrictional",
     mu: float = MU,
     foundation_divisions: tuple[int, ...] = NON_MATCHING,
+    move_mesh: bool = True,
 ) -> list[StepState]:
     """Write and run the case (2D or 3D by the divisions); the state after each of the steps."""
     dimension = len(foundation_divisions)
@@ -345,7 +363,7 @@ def run_stick_slip(
         _write_case(directory, foundation_divisions, mu)
     analysis = _SteppedAnalysis(
         ca.Model(),
-        Parameters(json.dumps(_parameters(directory, mortar_type, dimension))),
+        Parameters(json.dumps(_parameters(directory, mortar_type, dimension, move_mesh))),
         reporter=Reporter(quiet=True),
         dimension=dimension,
     )
@@ -408,22 +426,7 @@ def test_alm_frictional_slipping_nodes_obey_coulomb_law(non_matching: list[StepS
 
 @pytest.mark.parametrize(
     "foundation_divisions",
-    [
-        pytest.param(MATCHING, id="matching"),
-        pytest.param(
-            NON_MATCHING,
-            id="non_matching",
-            marks=pytest.mark.xfail(
-                strict=True,
-                reason="F_t / (mu N) - 1 = -5.44e-4 against a geometric bound of 3e-6, for any E "
-                "(-5.51e-4 at E = 1e5) and proportional to the ALM penalty (5e6 / 5e7 / 5e8: "
-                "-5.4e-5 / -5.4e-4 / -5.4e-3): an extra normal force eps * sum over pairs of "
-                "D_pair^T g_pair, because each pair condition augments with its own partial "
-                "weighted gap (AddALMFrictionalResidual, force = k lambda + eps g_pair n); the "
-                "pair gaps only sum to zero per node. The nodal Coulomb law holds exactly.",
-            ),
-        ),
-    ],
+    [pytest.param(MATCHING, id="matching"), pytest.param(NON_MATCHING, id="non_matching")],
 )
 def test_alm_frictional_sliding_force_is_mu_times_normal_force(
     foundation_divisions: tuple[int, int], tmp_path: Path
@@ -435,8 +438,38 @@ def test_alm_frictional_sliding_force_is_mu_times_normal_force(
         assert state.slipping == state.slave_nodes
         bound = _geometric_bound(state)
         assert bound < 1.0e-5  # the interface tilts by about p / E
-        # Matching: measured -7.2e-8 against the bound 3.0e-6.
+        # Measured -7.2e-8 (matching) and -6.4e-8 (non-matching) against the bound 3.0e-6. The
+        # non-matching interface used to miss by -5.4e-4 (proportional to the ALM penalty): the
+        # Coulomb bound was the nodal kλ_n + ε G, while the pairs transmit kλ_n + ε Q.
         assert abs(state.tangential_force / (MU * state.applied_load) - 1.0) <= bound
+
+
+@pytest.mark.parametrize(
+    "foundation_divisions",
+    [pytest.param(MATCHING, id="matching"), pytest.param(NON_MATCHING, id="non_matching")],
+)
+def test_alm_frictional_sliding_on_a_fixed_mesh(
+    foundation_divisions: tuple[int, int], tmp_path: Path
+) -> None:
+    """move_mesh_flag false: the geometrically linear contact.
+
+    Operators on the mesh, gap and slip on X0 + u. It used to measure the slip on the unmoved
+    coordinates (F_t 17 % low, WEIGHTED_SLIP of the wrong sign). Measured: F_t = mu N to
+    round-off in the slip steps, the traction along the slip at every slipping node.
+    """
+    states = run_stick_slip(tmp_path, foundation_divisions=foundation_divisions, move_mesh=False)
+    for state in states:
+        assert state.record.converged
+        assert state.active == state.slave_nodes
+        # The load acts on the unmoved top, of length 1: N = p.
+        assert state.base_reaction == pytest.approx(PRESSURE, rel=1.0e-9)
+    assert states[STICK_STEP - 1].slipping == 0
+    for step in SLIP_STEPS:
+        state = states[step - 1]
+        assert state.slipping == state.slave_nodes
+        assert state.min_traction_slip_power > 0.999
+        # No moved mesh: the interface keeps its reference normal, so the bound is round-off.
+        assert abs(state.tangential_force / (MU * state.base_reaction) - 1.0) <= 1.0e-9
 
 
 @pytest.fixture(scope="module")
@@ -510,31 +543,26 @@ def test_alm_frictional_3d_slipping_nodes_obey_coulomb_magnitude(
         np.testing.assert_allclose(state.coulomb_ratios, MU, rtol=1.0e-9)
 
 
-_MISALIGNED_3D = (
-    "3D: F_t / (mu N) - 1 = -3.9e-2 (matching and non-matching, both slip steps; -3.87e-2 also "
-    "when the block is pushed straight from the press into slip): every node is at "
-    "|t_t| = mu |t_n|, but the friction traction is not opposite to the slip (WEIGHTED_SLIP "
-    "within 0.5 deg of -x, traction turned by up to 28 deg at the block corners, symmetric in "
-    "y). In slip the direction comes from the tangential multiplier, which reproduces whatever "
-    "direction it starts with, so the first (elastic-trial) direction is never turned towards "
-    "the slip. 2D has one tangent and is not affected."
-)
-
-
-@pytest.mark.parametrize(
-    "interface",
-    [
-        pytest.param("matching", marks=pytest.mark.xfail(strict=True, reason=_MISALIGNED_3D)),
-        pytest.param("non_matching", marks=pytest.mark.xfail(strict=True, reason=_MISALIGNED_3D)),
-    ],
-)
-def test_alm_frictional_3d_sliding_force_is_mu_times_normal_force(
+@pytest.mark.parametrize("interface", ["matching", "non_matching"])
+def test_alm_frictional_3d_traction_opposes_the_slip_at_every_slipping_node(
     interface: str, runs_3d: dict[str, list[StepState]]
 ) -> None:
+    """The friction on the slave follows the slip, at every slipping node.
+
+    Within 0.1 deg of the master's relative motion (+WEIGHTED_SLIP): measured <= 2e-6 deg; the
+    reference's frozen direction left up to 28 deg at the block corners. The slip itself is not
+    along x at the corners (up to 7 deg in the first slip step, 1.1 deg in the second), so
+    F_t / (mu N) is the mean cosine of the slip directions, here 1 - 1.6e-3 and 1 - 3.4e-5:
+    physics, not an error (the rigid-drive tests of test_frictional_slip_direction.py, where the
+    slip is along the drive, give mu N to 1.5e-7).
+    """
     states = runs_3d[interface]
     _check_equilibrium(states)
     for step in SLIP_STEPS:
         state = states[step - 1]
-        bound = _geometric_bound(state)
-        assert bound < 1.0e-5
-        assert abs(state.tangential_force / (MU * state.applied_load) - 1.0) <= bound
+        assert state.slipping == state.slave_nodes
+        assert state.max_traction_slip_angle < 0.1
+        assert state.min_traction_slip_power > 0.0
+        lower = min(np.cos(np.radians(state.max_slip_x_angle)), 1.0)
+        ratio = state.tangential_force / (MU * state.applied_load)
+        assert lower - 1.0e-6 <= ratio <= 1.0 + _geometric_bound(state)

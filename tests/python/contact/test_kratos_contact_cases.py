@@ -17,6 +17,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import contact_app as ca
@@ -45,6 +46,15 @@ CASES = {
 }
 COMPONENTS = [name for name in CASES if name.startswith("alm_frictionless")]
 
+#: The reference takes the slip direction from the tangential multiplier alone and converges to a
+#: friction traction along the slip (test_reference_friction_is_not_dissipative_but_ours_is).
+FRICTION_DIRECTION = (
+    "DISPLACEMENT_X of the four contact nodes 1.11e-3 off the 2019 file (tolerance 1e-3; u_y "
+    "within it): the reference's converged slip traction points along the slip (k lambda_t . "
+    "WEIGHTED_SLIP < 0 at both slipping nodes), ours against it (slip law on the trial traction, "
+    "docs/theory/mortar.md section 8)"
+)
+
 #: Cases whose 2019 result files we do not match, with the difference measured on 2026-11-21.
 #: xfail(strict=True): a case that starts to agree fails the suite, so these lists cannot go stale.
 DIFFERENT_FROM_2019 = {
@@ -55,13 +65,12 @@ DIFFERENT_FROM_2019 = {
     "penalty_frictional_2d_stick": "our slave nodes stick to the master; the 2019 file and the "
     "current Kratos keep them at x = 0 while the master slides 5.2e-3 (their friction force is "
     "spread with D - D_old, B2, and vanishes for small sliding; we spread it with D, M)",
+    "alm_frictional_2d_hyper_simple": FRICTION_DIRECTION,
 }
 DIFFERENT_FROM_ORACLE = {
     "alm_frictionless_2d_taylor": "DISPLACEMENT_X 4.3e-4 relative at node 4 (|u_x| = 1e-5, the "
     "field reaches 4.5e-2); DISPLACEMENT_Y agrees to 1.6e-6",
-    "alm_frictional_2d_hyper_simple": "DISPLACEMENT_X 4.4e-4, DISPLACEMENT_Y 8.1e-5 relative "
-    "(slip; independent of tangent_factor); attributed to the B1 fix (true step increment in the "
-    "non-objective slip), not confirmed",
+    "alm_frictional_2d_hyper_simple": FRICTION_DIRECTION,
     "penalty_frictional_2d_stick": "slave DISPLACEMENT_X +-2.79e-3 vs 0: see the 2019 list (B2)",
     "mpc_2d_matching": "5.0e-3 relative: the current Kratos leaves the initial 1e-3 gap open "
     "(slave and master end at the same y with the gap still 1e-3 by WEIGHTED_GAP / NODAL_AREA); "
@@ -178,3 +187,34 @@ def test_reference_case_runs_through_the_command_line(case: str, tmp_path: Path)
         check=False,
     )
     assert result.returncode == 0, result.stderr
+
+
+@pytest.mark.kratos_reference
+def test_reference_friction_is_not_dissipative_but_ours_is() -> None:
+    """Coulomb friction dissipates; the reference's converged slip patch does not.
+
+    The traction on the slave follows the master's relative motion, k lambda_t . WEIGHTED_SLIP >= 0
+    at every slipping node (WEIGHTED_SLIP = P(M dx2 - D dx1), the RHS is the force on the bodies).
+    Kratos 10.4.4 converges to the opposite sign on its own slip patch (fixture
+    alm_frictional_2d_slip.json, the hyper-simple mesh with mu = 0.01).
+    """
+    oracle = json.loads((ORACLE_DIR / "alm_frictional_2d_slip.json").read_text())
+    kratos_power = [
+        values["AUGMENTED_TANGENT_CONTACT_PRESSURE_X"] * values["WEIGHTED_SLIP_X"]
+        + values["AUGMENTED_TANGENT_CONTACT_PRESSURE_Y"] * values["WEIGHTED_SLIP_Y"]
+        for node, values in oracle["values"].items()
+        if oracle["flags"].get(node, {}).get("SLIP")
+    ]
+    assert len(kratos_power) == 2 and all(power < 0.0 for power in kratos_power)
+
+    analysis = _run("alm_frictional_2d_hyper_simple", False, checks=False)
+    slipping = [
+        node
+        for node in analysis.model.GetModelPart("Structure").Nodes
+        if node.Is(ca.SLAVE) and node.Is(ca.ACTIVE) and node.Is(ca.SLIP)
+    ]
+    assert len(slipping) == 2
+    for node in slipping:
+        traction = np.array(node.GetValue(ca.AUGMENTED_TANGENT_CONTACT_PRESSURE))
+        slip = np.array(node.GetSolutionStepValue(ca.WEIGHTED_SLIP))
+        assert traction @ slip > 0.99 * np.linalg.norm(traction) * np.linalg.norm(slip)

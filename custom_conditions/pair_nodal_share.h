@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// A pair's part of the nodal interface sums, and the map that rebuilds the nodal quantities from it inside one pair
+/// (docs/theory/mortar.md §7 "Nodal laws in a pair-wise assembly"). Internal to custom_conditions/.
+
+#include <Eigen/Core>
+
+#include "contact_app/application.h"
+#include "contact_app/kernel/geometries/geometry.h"
+#include "contact_app/kernel/serializer.h"
+#include "custom_utilities/contact_utilities.h"
+
+namespace contact_app {
+
+/// What this pair added to the nodal sums of the last explicit pass, per slave node j:
+/// a_j = Σ_k D_jk (to NODAL_AREA), g̃_j (to WEIGHTED_GAP) and s_j (to WEIGHTED_SLIP, frictional families only).
+/// Invalid until the first explicit pass and after a pass that found the pair isolated.
+template <int TDim, int TNumNodes>
+struct PairNodalShare {
+    Eigen::Matrix<double, TNumNodes, 1> area = Eigen::Matrix<double, TNumNodes, 1>::Zero();
+    Eigen::Matrix<double, TNumNodes, 1> gap = Eigen::Matrix<double, TNumNodes, 1>::Zero();
+    Eigen::Matrix<double, TNumNodes, TDim> slip = Eigen::Matrix<double, TNumNodes, TDim>::Zero();
+    bool valid = false;
+
+    void Save(Serializer& serializer) const {
+        serializer.Save("NodalShareValid", valid);
+        serializer.Save("NodalShareArea", area);
+        serializer.Save("NodalShareGap", gap);
+        serializer.Save("NodalShareSlip", slip);
+    }
+    void Load(Serializer& serializer) {
+        serializer.Load("NodalShareValid", valid);
+        serializer.Load("NodalShareArea", area);
+        serializer.Load("NodalShareGap", gap);
+        serializer.Load("NodalShareSlip", slip);
+    }
+};
+
+/// Per slave node j, what the pairs transmit and the nodal slip, as functions of this pair's unknowns
+/// (docs/theory/mortar.md §7). With A_j = NODAL_AREA = Σ_c a_j^c and ω_j = a_j⁰ / A_j this pair's share:
+/// - the gap the pairs' augmentation transmits, Q_j = Σ_c ω_j^c g̃_j^c (AREA_WEIGHTED_PAIR_GAP / A_j): a slave node
+///   receives Σ_c D_jj^c (kλ_n + ε g̃^c) = A_j (kλ_n + ε Q_j); rebuilt as Q̂_j(q) = Q_j + g̃_j(q) − g̃_j⁰;
+/// - the nodal weighted slip S_j = WEIGHTED_SLIP, rebuilt as Ŝ_j(q) = S_j + (s_j(q) − s_j⁰)/ω_j.
+/// At the state of the explicit pass both equal the nodal values, and a nodal law weighted by ω_j in each pair
+/// assembles (Σ_c ω_j^c = 1) to the nodal law with its exact derivative. A node without a valid share keeps the pair's
+/// own quantities (ω = 1, Q̂ = g̃(q), Ŝ = s(q)).
+template <int TDim, int TNumNodes>
+struct NodalInterfaceMap {
+    Eigen::Matrix<double, TNumNodes, 1> weight = Eigen::Matrix<double, TNumNodes, 1>::Ones();             ///< ω_j
+    Eigen::Matrix<double, TNumNodes, 1> gap_offset = Eigen::Matrix<double, TNumNodes, 1>::Zero();         ///< Q − g̃⁰
+    Eigen::Matrix<double, TNumNodes, TDim> slip_offset = Eigen::Matrix<double, TNumNodes, TDim>::Zero();  ///< S − s⁰/ω
+
+    template <class T>
+    T TransmittedGap(int j, const T& pair_gap) const {
+        return pair_gap + gap_offset[j];
+    }
+    template <class T>
+    Eigen::Matrix<T, TDim, 1> Slip(int j, const Eigen::Matrix<T, TDim, 1>& pair_slip) const {
+        return pair_slip / weight[j] + slip_offset.row(j).transpose().template cast<T>();
+    }
+};
+
+/// Reads Q, S (if @p frictional) and A from the slave nodes.
+template <int TDim, int TNumNodes>
+NodalInterfaceMap<TDim, TNumNodes> MakeNodalInterfaceMap(const Geometry& slave,
+                                                         const PairNodalShare<TDim, TNumNodes>& share,
+                                                         bool frictional) {
+    NodalInterfaceMap<TDim, TNumNodes> map;
+    if (!share.valid) return map;
+    for (int j = 0; j < TNumNodes; ++j) {
+        const Node& node = slave[j];
+        const double total_area = node.GetValue(NODAL_AREA);
+        if (!(share.area[j] > 0.0) || !(total_area >= share.area[j] * (1.0 - 1e-12))) continue;
+        map.weight[j] = share.area[j] / total_area;
+        map.gap_offset[j] = ContactUtilities::TransmittedWeightedGap(node) - share.gap[j];
+        if (frictional)
+            map.slip_offset.row(j) = node.FastGetSolutionStepValue(WEIGHTED_SLIP).template head<TDim>().transpose() -
+                                     share.slip.row(j) / map.weight[j];
+    }
+    return map;
+}
+
+/// What the explicit pass adds to slave node j for this pair: g̃ to WEIGHTED_GAP, a to NODAL_AREA and a·g̃ to
+/// AREA_WEIGHTED_PAIR_GAP (the slip is added by the frictional families).
+inline void AddPairShareToNode(Node& node, double area, double gap) {
+    node.FastGetSolutionStepValue(WEIGHTED_GAP) += gap;
+    node.SetValue(NODAL_AREA, node.GetValue(NODAL_AREA) + area);
+    node.SetValue(AREA_WEIGHTED_PAIR_GAP, node.GetValue(AREA_WEIGHTED_PAIR_GAP) + area * gap);
+}
+
+}  // namespace contact_app
