@@ -71,9 +71,10 @@ std::size_t ComputePenaltyFrictionlessActiveSet(ModelPart& model_part) {
     const ProcessInfo& process_info = model_part.GetProcessInfo();
     std::size_t flips = 0;
     for (Node* node : SlaveNodesToUpdate(model_part)) {
-        const double penalty = Penalty(*node, process_info);
-        node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, penalty * ContactUtilities::TransmittedWeightedGap(*node));
-        flips += UpdateActive(*node, penalty * NodalValue(*node, WEIGHTED_GAP) < 0.0);
+        // A penalty node is in contact while the pairs push it: the transmitted ε Q < 0 (docs/theory/mortar.md §7).
+        const double augmented_normal = Penalty(*node, process_info) * ContactUtilities::TransmittedWeightedGap(*node);
+        node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, augmented_normal);
+        flips += UpdateActive(*node, augmented_normal < 0.0);
     }
     return flips;
 }
@@ -146,7 +147,7 @@ std::array<std::size_t, 2> ComputePenaltyFrictionalActiveSet(ModelPart& model_pa
         const double penalty = Penalty(*node, process_info);
         const double transmitted_normal = penalty * ContactUtilities::TransmittedWeightedGap(*node);
         node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, transmitted_normal);
-        const bool active = penalty * NodalValue(*node, WEIGHTED_GAP) < 0.0;
+        const bool active = transmitted_normal < 0.0;
         flips[0] += UpdateActive(*node, active);
         if (!active) {  // the deactivation is the counted change; the stick/slip state is just reset
             NodalValue(*node, WEIGHTED_SLIP).setZero();

@@ -26,7 +26,7 @@ FALLBACK_PENALTY = 1.0e16
 def penalty_defaults() -> dict[str, Any]:
     """Every key of the penalty process with its default."""
     defaults = alm_defaults()
-    defaults["tangent_factor"] = 1.0
+    defaults["tangent_factor"] = 1.0e-2
     defaults["advance_ALM_parameters"]["penalty"] = 1.0e16
     defaults["advance_ALM_parameters"]["max_gap_factor"] = 5.0e-4
     return defaults
