@@ -1,4 +1,4 @@
-"""What the 2D and 3D Hertz examples share: the contact width estimates, E*, inputs, folder.
+"""What the 2D and 3D Hertz examples share: mesh grading and gmsh groups, width estimates, E*.
 
 Both examples measure an elliptic pressure profile p(c) = p0 sqrt(1 - c^2/w^2) (c = x in 2D, the
 radius r in 3D; w = b or a) two ways: a least-squares fit of p^2 against c^2, and the second
@@ -16,7 +16,74 @@ import os
 from collections.abc import Iterator
 from pathlib import Path
 
+import meshio
 import numpy as np
+
+
+def graded(length: float, fine_length: float, fine_intervals: int, growth: float) -> np.ndarray:
+    """Parameters in [0, 1]: uniform over ``fine_length``, then geometric up to ``length``.
+
+    Beyond the fine zone the fewest intervals whose ratio does not exceed ``growth`` are used, with
+    the ratio that fills the rest exactly.
+    """
+    h = fine_length / fine_intervals
+    rest = length - fine_length
+    if rest <= 0.0:
+        raise ValueError(f"fine length {fine_length} exceeds the edge length {length}")
+
+    def filled(ratio: float, count: int) -> float:
+        return h * sum(ratio**k for k in range(1, count + 1))
+
+    count = 1
+    while filled(growth, count) < rest:
+        count += 1
+    low, high = 0.5, growth
+    for _ in range(200):
+        ratio = 0.5 * (low + high)
+        low, high = (ratio, high) if filled(ratio, count) < rest else (low, ratio)
+    steps = h * np.concatenate((np.ones(fine_intervals), ratio ** np.arange(1, count + 1)))
+    values = np.concatenate(([0.0], np.cumsum(steps))) / length
+    values[-1] = 1.0
+    return values
+
+
+def subdivide(parameters: np.ndarray, factor: int) -> np.ndarray:
+    """Split each interval into ``factor`` equal ones."""
+    pieces = [
+        np.linspace(a, b, factor + 1)[:-1]
+        for a, b in zip(parameters[:-1], parameters[1:], strict=True)
+    ]
+    return np.concatenate([*pieces, parameters[-1:]])
+
+
+def gmsh_mesh(
+    points: np.ndarray,
+    cells: list[tuple[str, np.ndarray]],
+    tags: list[str],
+    node_groups: dict[str, np.ndarray | list[int]],
+    groups: dict[str, tuple[int, int]],
+) -> meshio.Mesh:
+    """A meshio mesh whose cell blocks carry gmsh physical tags.
+
+    ``tags`` names the physical group of each block of ``cells``; every entry of ``node_groups``
+    becomes a block of ``vertex`` cells of its group. ``groups`` maps a group name to its
+    (tag, dimension), written as the mesh's field data.
+    """
+    cells = list(cells)
+    tags = list(tags)
+    for name, nodes in node_groups.items():
+        cells.append(("vertex", np.asarray(nodes, dtype=int).reshape(-1, 1)))
+        tags.append(name)
+    physical = [
+        np.full(len(block[1]), groups[name][0], dtype=int)
+        for block, name in zip(cells, tags, strict=True)
+    ]
+    return meshio.Mesh(
+        points,
+        cells,
+        cell_data={"gmsh:physical": physical, "gmsh:geometrical": [p.copy() for p in physical]},
+        field_data={name: np.array(value) for name, value in groups.items()},
+    )
 
 
 def fit_elliptic_profile(c: np.ndarray, p: np.ndarray, shape: str) -> tuple[float, float]:

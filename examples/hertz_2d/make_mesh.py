@@ -19,10 +19,14 @@ from __future__ import annotations
 
 import argparse
 import math
+import sys
 from pathlib import Path
 
 import meshio
 import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+from hertz_common import gmsh_mesh, graded, subdivide  # noqa: E402  (examples/hertz_common.py)
 
 RADIUS = 10.0
 FOUNDATION_WIDTH = 2.0 * RADIUS
@@ -45,44 +49,9 @@ GROUPS = {
 }
 
 
-def graded(length: float, fine_length: float, fine_intervals: int, growth: float) -> np.ndarray:
-    """Parameters in [0, 1]: uniform over ``fine_length``, then geometric up to ``length``."""
-    h = fine_length / fine_intervals
-    points = [i * h for i in range(fine_intervals + 1)]
-    rest = length - fine_length
-    if rest <= 0.0:
-        raise ValueError(f"fine length {fine_length} exceeds the edge length {length}")
-    count = 1
-    while h * sum(growth**k for k in range(1, count + 1)) < rest:
-        count += 1
-    low, high = 0.5, growth  # the ratio that fills `rest` exactly with `count` intervals
-    for _ in range(200):
-        ratio = 0.5 * (low + high)
-        if h * sum(ratio**k for k in range(1, count + 1)) < rest:
-            low = ratio
-        else:
-            high = ratio
-    position = fine_length
-    for k in range(1, count + 1):
-        position += h * ratio**k
-        points.append(position)
-    values = np.asarray(points) / points[-1]
-    values[-1] = 1.0
-    return values
-
-
 def uniform(intervals: int) -> np.ndarray:
     """``intervals`` equal intervals of [0, 1]."""
     return np.linspace(0.0, 1.0, intervals + 1)
-
-
-def subdivide(parameters: np.ndarray, factor: int) -> np.ndarray:
-    """Split each interval into ``factor`` equal ones."""
-    pieces = [
-        np.linspace(a, b, factor + 1)[:-1]
-        for a, b in zip(parameters[:-1], parameters[1:], strict=True)
-    ]
-    return np.concatenate([*pieces, parameters[-1:]])
 
 
 class NodeTable:
@@ -201,25 +170,13 @@ def build(refinement: int) -> meshio.Mesh:
         ("quad", np.array(foundation_quads) + offset),
         ("line", np.array(top_lines)),
     ]
-    tags = ["cylinder", "foundation", "load_top"]
-    for name, group in (
-        ("contact_slave", slave),
-        ("contact_master", master),
-        ("symmetry", symmetry),
-        ("fixed_base", base),
-    ):
-        cells.append(("vertex", np.array(group, dtype=int).reshape(-1, 1)))
-        tags.append(name)
-    physical = [
-        np.full(len(block[1]), GROUPS[name][0], dtype=int)
-        for block, name in zip(cells, tags, strict=True)
-    ]
-    return meshio.Mesh(
-        points,
-        cells,
-        cell_data={"gmsh:physical": physical, "gmsh:geometrical": [p.copy() for p in physical]},
-        field_data={name: np.array(value) for name, value in GROUPS.items()},
-    )
+    node_groups = {
+        "contact_slave": slave,
+        "contact_master": master,
+        "symmetry": symmetry,
+        "fixed_base": base,
+    }
+    return gmsh_mesh(points, cells, ["cylinder", "foundation", "load_top"], node_groups, GROUPS)
 
 
 def contact_spacing(refinement: int) -> float:

@@ -22,11 +22,15 @@ gmsh points (meshio ``vertex`` cells); the contact process builds the interface 
 from __future__ import annotations
 
 import argparse
+import sys
 from dataclasses import dataclass
 from pathlib import Path
 
 import meshio
 import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+from hertz_common import gmsh_mesh, graded, subdivide  # noqa: E402  (examples/hertz_common.py)
 
 RADIUS = 10.0
 FOUNDATION_WIDTH = RADIUS  # L
@@ -59,42 +63,6 @@ HEX_EDGES = (
     + tuple((4 + k, 4 + (k + 1) % 4) for k in range(4))
     + tuple((k, k + 4) for k in range(4))
 )
-
-
-def graded(length: float, fine_length: float, fine_intervals: int, growth: float) -> np.ndarray:
-    """Parameters in [0, 1]: uniform over ``fine_length``, then geometric up to ``length``.
-
-    Beyond the fine zone the fewest intervals whose ratio does not exceed ``growth`` are used, with
-    the ratio that fills the rest exactly.
-    """
-    h = fine_length / fine_intervals
-    rest = length - fine_length
-    if rest <= 0.0:
-        raise ValueError(f"fine length {fine_length} exceeds the edge length {length}")
-
-    def filled(ratio: float, count: int) -> float:
-        return h * sum(ratio**k for k in range(1, count + 1))
-
-    count = 1
-    while filled(growth, count) < rest:
-        count += 1
-    low, high = 0.5, growth
-    for _ in range(200):
-        ratio = 0.5 * (low + high)
-        low, high = (ratio, high) if filled(ratio, count) < rest else (low, ratio)
-    steps = h * np.concatenate((np.ones(fine_intervals), ratio ** np.arange(1, count + 1)))
-    values = np.concatenate(([0.0], np.cumsum(steps))) / length
-    values[-1] = 1.0
-    return values
-
-
-def subdivide(parameters: np.ndarray, factor: int) -> np.ndarray:
-    """Split each interval into ``factor`` equal ones."""
-    pieces = [
-        np.linspace(a, b, factor + 1)[:-1]
-        for a, b in zip(parameters[:-1], parameters[1:], strict=True)
-    ]
-    return np.concatenate([*pieces, parameters[-1:]])
 
 
 def ball_octant(u: np.ndarray, v: np.ndarray, w: np.ndarray) -> np.ndarray:
@@ -241,26 +209,14 @@ def build(refinement: float) -> meshio.Mesh:
         ("hexahedron", block_hexes),
         ("quad", top_quads),
     ]
-    tags = ["sphere", "foundation", "load_top"]
-    for name, group in (
-        ("contact_slave", slave),
-        ("contact_master", master),
-        ("symmetry_x", symmetry_x),
-        ("symmetry_y", symmetry_y),
-        ("fixed_base", base),
-    ):
-        cells.append(("vertex", np.asarray(group, dtype=int).reshape(-1, 1)))
-        tags.append(name)
-    physical = [
-        np.full(len(block[1]), GROUPS[name][0], dtype=int)
-        for block, name in zip(cells, tags, strict=True)
-    ]
-    return meshio.Mesh(
-        points,
-        cells,
-        cell_data={"gmsh:physical": physical, "gmsh:geometrical": [p.copy() for p in physical]},
-        field_data={name: np.array(value) for name, value in GROUPS.items()},
-    )
+    node_groups = {
+        "contact_slave": slave,
+        "contact_master": master,
+        "symmetry_x": symmetry_x,
+        "symmetry_y": symmetry_y,
+        "fixed_base": base,
+    }
+    return gmsh_mesh(points, cells, ["sphere", "foundation", "load_top"], node_groups, GROUPS)
 
 
 def contact_spacing(refinement: float) -> float:
