@@ -160,7 +160,10 @@ void ComputePreviousOperatorsOnce(const TCondition& condition, const ProcessInfo
     const Geometry& slave = condition.GetParentGeometry();
     const Geometry& master = condition.GetPairedGeometry();
     // A fixed mesh (geometrically linear contact) keeps its operators: those of the mesh coordinates.
-    const bool finite_sliding = MeshFollowsDisplacement(slave) && MeshFollowsDisplacement(master);
+    bool slave_follows = true, master_follows = true;
+    CurrentCoordinates<TDim, TNS>(slave, &slave_follows);
+    CurrentCoordinates<TDim, TNM>(master, &master_follows);
+    const bool finite_sliding = slave_follows && master_follows;
     const auto x1 = finite_sliding ? CoordinatesAtStep<TDim, TNS>(slave, 1) : MeshCoordinates<TDim, TNS>(slave);
     const auto x2 = finite_sliding ? CoordinatesAtStep<TDim, TNM>(master, 1) : MeshCoordinates<TDim, TNM>(master);
     bool dual = false;

@@ -151,11 +151,12 @@ bool IntegrateForExplicitPass(TCondition& condition, const ProcessInfo& process_
     const MortarIntegrator<TDim, TNS, TNM, double> integrator(condition.IntegrationSettings(),
                                                               condition.SegmentationSettingsFrom(process_info));
     const Geometry& master = condition.GetPairedGeometry();
-    state.x1 = CurrentCoordinates<TDim, TNS>(slave);
-    state.x2 = CurrentCoordinates<TDim, TNM>(master);
+    bool slave_follows = true, master_follows = true;
+    state.x1 = CurrentCoordinates<TDim, TNS>(slave, &slave_follows);
+    state.x2 = CurrentCoordinates<TDim, TNM>(master, &master_follows);
     state.normals = NodalNormals<TDim, TNS>(slave);
     // The operators on the mesh coordinates, as the residual (MortarContactCondition::CalculateConditionSystem).
-    const bool finite_sliding = MeshFollowsDisplacement(slave) && MeshFollowsDisplacement(master);
+    const bool finite_sliding = slave_follows && master_follows;
     const auto pair = IntegrateMortarPair<TDim, TNS, TNM>(
         integrator, finite_sliding ? state.x1 : MeshCoordinates<TDim, TNS>(slave),
         ToSpatialVector<TDim>(condition.GetValue(NORMAL)),

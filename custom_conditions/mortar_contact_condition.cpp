@@ -205,8 +205,9 @@ void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Pr
 
     const Geometry& slave = GetParentGeometry();
     const Geometry& master = GetPairedGeometry();
-    const auto x1 = CurrentCoordinates<TDim, TNS>(slave);
-    const auto x2 = CurrentCoordinates<TDim, TNM>(master);
+    bool slave_follows = true, master_follows = true;
+    const auto x1 = CurrentCoordinates<TDim, TNS>(slave, &slave_follows);
+    const auto x2 = CurrentCoordinates<TDim, TNM>(master, &master_follows);
     const SpatialVector<double, TDim> slave_normal = ToSpatialVector<TDim>(GetValue(NORMAL));
     const auto normals = NodalNormals<TDim, TNS>(slave);
     const MultiplierVector lambda = MultiplierValues();
@@ -215,7 +216,7 @@ void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Pr
 
     // Moving mesh: D, M and the NV normals follow x = X0 + u (finite sliding). Fixed mesh (move_mesh_flag false): they
     // stay on the mesh coordinates and only the gap and slip see u, the geometrically linear contact.
-    const bool finite_sliding = MeshFollowsDisplacement(slave) && MeshFollowsDisplacement(master);
+    const bool finite_sliding = slave_follows && master_follows;
     const auto mesh_x1 = finite_sliding ? x1 : MeshCoordinates<TDim, TNS>(slave);
     const auto mesh_x2 = finite_sliding ? x2 : MeshCoordinates<TDim, TNM>(master);
 

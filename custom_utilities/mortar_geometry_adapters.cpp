@@ -17,18 +17,24 @@ void CheckNodeCount(const Geometry& geometry, int expected) {
 }  // namespace
 
 template <int TDim, int TNN>
-NodeCoordinates<double, TDim, TNN> CurrentCoordinates(const Geometry& geometry) {
+NodeCoordinates<double, TDim, TNN> CurrentCoordinates(const Geometry& geometry, bool* mesh_follows) {
     CheckNodeCount(geometry, TNN);
     NodeCoordinates<double, TDim, TNN> x;
+    bool follows = true;
     for (int k = 0; k < TNN; ++k) {
         const Node& node = geometry[k];
         // X0 + u even when the mesh is not moved (move_mesh_flag false): the contact kinematics follow the
         // displacement, as the reference's X1 + u1 split does.
-        const Array3 position = node.SolutionStepsDataHas(DISPLACEMENT)
-                                    ? Array3(node.InitialCoordinates() + node.FastGetSolutionStepValue(DISPLACEMENT))
-                                    : node.Coordinates();
-        x.row(k) = position.head<TDim>().transpose();
+        if (node.SolutionStepsDataHas(DISPLACEMENT)) {
+            const Array3 position = node.InitialCoordinates() + node.FastGetSolutionStepValue(DISPLACEMENT);
+            follows = follows && (node.Coordinates() - position).squaredNorm() <=
+                                     1e-24 * (1.0 + position.squaredNorm());
+            x.row(k) = position.head<TDim>().transpose();
+        } else {
+            x.row(k) = node.Coordinates().head<TDim>().transpose();
+        }
     }
+    if (mesh_follows != nullptr) *mesh_follows = follows;
     return x;
 }
 
@@ -38,16 +44,6 @@ NodeCoordinates<double, TDim, TNN> MeshCoordinates(const Geometry& geometry) {
     NodeCoordinates<double, TDim, TNN> x;
     for (int k = 0; k < TNN; ++k) x.row(k) = geometry[k].Coordinates().head<TDim>().transpose();
     return x;
-}
-
-bool MeshFollowsDisplacement(const Geometry& geometry) {
-    for (std::size_t k = 0; k < geometry.size(); ++k) {
-        const Node& node = geometry[k];
-        if (!node.SolutionStepsDataHas(DISPLACEMENT)) continue;
-        const Array3 expected = node.InitialCoordinates() + node.FastGetSolutionStepValue(DISPLACEMENT);
-        if ((node.Coordinates() - expected).norm() > 1e-12 * (1.0 + expected.norm())) return false;
-    }
-    return true;
 }
 
 template <int TDim, int TNN>
@@ -70,7 +66,7 @@ NodeCoordinates<double, TDim, TNN> NodalNormals(const Geometry& geometry) {
 }
 
 #define CONTACT_APP_INSTANTIATE_ADAPTERS(D, NN)                                                          \
-    template NodeCoordinates<double, D, NN> CurrentCoordinates<D, NN>(const Geometry&);                  \
+    template NodeCoordinates<double, D, NN> CurrentCoordinates<D, NN>(const Geometry&, bool*);           \
     template NodeCoordinates<double, D, NN> MeshCoordinates<D, NN>(const Geometry&);                     \
     template NodeCoordinates<double, D, NN> CoordinatesAtStep<D, NN>(const Geometry&, std::size_t);     \
     template NodeCoordinates<double, D, NN> NodalNormals<D, NN>(const Geometry&);

@@ -9,17 +9,14 @@ namespace contact_app {
 /// @brief Current node coordinates X0 + u (historical DISPLACEMENT; the node's coordinates when it has none) of a
 ///        kernel geometry as the n × d matrix the mortar utilities take; independent of whether the mesh is moved.
 /// @throws InputError if the geometry does not have @p TNumNodes nodes
+/// @param[out] mesh_follows if given: false unless the mesh coordinates equal X0 + u at every node (to round-off)
 template <int TDim, int TNumNodes>
-NodeCoordinates<double, TDim, TNumNodes> CurrentCoordinates(const Geometry& geometry);
+NodeCoordinates<double, TDim, TNumNodes> CurrentCoordinates(const Geometry& geometry, bool* mesh_follows = nullptr);
 
 /// @brief The coordinates the mesh holds (Coordinates()): X0 + u when the strategy moves the mesh, X0 when it does not
 ///        (move_mesh_flag false). The mortar operators and normals live on these.
 template <int TDim, int TNumNodes>
 NodeCoordinates<double, TDim, TNumNodes> MeshCoordinates(const Geometry& geometry);
-
-/// @brief Whether the mesh of the geometry follows the displacement (Coordinates() = X0 + u at every node, to
-///        round-off): the moving-mesh (finite sliding) kinematics; otherwise the geometrically linear one.
-bool MeshFollowsDisplacement(const Geometry& geometry);
 
 /// @brief Start-of-step coordinates X0 + u(@p step) (historical DISPLACEMENT at buffer @p step).
 /// @throws InputError if the node count is wrong or DISPLACEMENT is not historical / step is out of the buffer
