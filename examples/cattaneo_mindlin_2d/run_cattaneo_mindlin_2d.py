@@ -1,0 +1,599 @@
+"""Run the 2D Cattaneo-Mindlin example and compare the contact tractions with the analytic ones.
+
+A cylinder pressed by P' (steps 1-4, t in [0, 1]) and then pulled sideways by Q' < mu P' with P'
+kept (steps 5-8, t in [1, 2]); plane strain, identical materials, so the normal and the tangential
+problems uncouple (Johnson, Contact Mechanics, 7.1):
+
+* normal: a = sqrt(4 P' R / (pi E*)), p(x) = p0 sqrt(1 - x^2/a^2), p0 = 2 P' / (pi a);
+* tangential: a central stick zone |x| < c, c/a = sqrt(1 - Q'/(mu P')), where
+  q(x) = mu p0 sqrt(1 - x^2/a^2) - mu p0 (c/a) sqrt(1 - x^2/c^2), and slip zones c < |x| < a
+  where q = mu p.
+
+The loads are LINE_LOAD components on the cylinder's flat top (y = R), written by
+``load_values`` from Q'/(mu P') (``--ratio``, default 0.5) and mu (the contact process's
+``friction_coefficients``): a uniform -P'/(2R) in y; a uniform Q'/(2R) in x; and a couple
++-Q'/R in y on the right and left halves of the top. The couple cancels the moment Q' R of the
+tangential load about the contact point, which the contact (width 2a = 0.023 R) cannot carry:
+without it the cylinder tips over. It is piecewise constant so that the conditions, whose value
+is evaluated at their centre, apply exactly Q' R (sum of |x_c| L = R^2 on any mesh with a node at
+x = 0). The analysis is geometrically linear (move_mesh_flag false), as the analytic solution.
+
+Measured on the active slave (cylinder) nodes: p = -AUGMENTED_NORMAL_CONTACT_PRESSURE, the shear
+traction q = |t| (t = AUGMENTED_TANGENT_CONTACT_PRESSURE, the foundation's traction on the
+cylinder, against Q'; q is its magnitude with the sign of -t_x), STICK = ACTIVE and not SLIP.
+
+* a from the second moment of the nodal normal forces, p0 from the semi-ellipse fit (as
+  hertz_2d);
+* c as the half-width of the stick set: on each side the midpoint between the outermost stick
+  node and the next slave node (a slip node), c = (c_right - c_left) / 2; with the stick set
+  right, that is within h/2 of the exact c (h the node spacing, uniform over the contact);
+* c a second way, between the nodes: the deficit mu p - q is mu p0 (c/a) sqrt(1 - x^2/c^2) in
+  the stick zone and 0 in the slip zones, a semi-ellipse of half-width c, so c^2 = 4
+  sum(x^2 d L) / sum(d L) (d L the nodal deficit forces, L the lumped nodal length);
+* the tangential force sum(q L) against Q', and the base's x reaction.
+
+Writes ``cattaneo_mindlin_2d_traction.png`` and ``cattaneo_mindlin_2d_summary.txt``; exit code 0
+when every step converged, 1 otherwise.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib.util
+import json
+import math
+import sys
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+import contact_app as ca
+from contact_app.analysis import StructuralMechanicsAnalysis
+from contact_app.analysis.reporting import Reporter
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent))
+from hertz_common import (  # noqa: E402  (examples/hertz_common.py)
+    effective_modulus,
+    example_inputs,
+    fit_elliptic_profile,
+    second_moment_width,
+    working_directory,
+)
+
+
+def _mesher():
+    """make_mesh.py of this folder under a name of its own.
+
+    hertz_2d and hertz_3d have a make_mesh.py too: a plain ``import make_mesh`` would reuse
+    whichever one a process (pytest, say) imported first.
+    """
+    name = "cattaneo_mindlin_2d_make_mesh"
+    if name not in sys.modules:
+        spec = importlib.util.spec_from_file_location(name, HERE / "make_mesh.py")
+        module = importlib.util.module_from_spec(spec)
+        assert spec.loader is not None
+        sys.modules[name] = module
+        spec.loader.exec_module(module)
+    return sys.modules[name]
+
+
+make_mesh = _mesher()
+
+MESH = "cattaneo_mindlin_2d.msh"
+PLOT = "cattaneo_mindlin_2d_traction.png"
+SUMMARY = "cattaneo_mindlin_2d_summary.txt"
+DEFAULT_REFINEMENT = 2
+DEFAULT_RATIO = 0.5  # Q'/(mu P'): c/a = sqrt(0.5) = 0.707
+LINE_PRESSURE = 6.25  # N/mm^2 on the top of length 2R: P' = 125 N/mm, as hertz_2d
+TOP_LENGTH = 2.0 * make_mesh.RADIUS
+RAMP = "min(max(t - 1.0, 0.0), 1.0)"  # Q' from t = 1 to t = 2
+
+
+def load_values(ratio: float, mu: float) -> list[str | float]:
+    """The LINE_LOAD value [x, y, z] of the top conditions for Q'/(mu P') = ``ratio``."""
+    if not 0.0 < ratio < 1.0:
+        raise ValueError(f"Q'/(mu P') must be in (0, 1) for partial slip, got {ratio}")
+    tangential = ratio * mu * LINE_PRESSURE * TOP_LENGTH
+    shear = tangential / TOP_LENGTH
+    couple = tangential / make_mesh.RADIUS
+    return [
+        f"{shear:.12g}*{RAMP}",
+        f"-{LINE_PRESSURE:.12g}*min(t, 1.0) + {couple:.12g}*x/abs(x)*{RAMP}",
+        0.0,
+    ]
+
+
+def contact_parameters(parameters: dict) -> dict:
+    """The Parameters block of the ALM contact process of a ProjectParameters tree."""
+    for process in parameters["processes"]["contact_process_list"]:
+        if process["python_module"] == "alm_contact_process":
+            return process["Parameters"]
+    raise ValueError("no alm_contact_process in processes.contact_process_list")
+
+
+def friction_coefficient(parameters: dict) -> float:
+    """Mu of the pair "0" of the contact process."""
+    return float(contact_parameters(parameters)["friction_coefficients"]["0"])
+
+
+@dataclass
+class SlaveNode:
+    """The contact state of one cylinder surface node."""
+
+    x: float
+    p: float  # normal pressure, > 0 in compression
+    q: float  # shear traction magnitude, signed as -t_x (> 0 against Q')
+    active: bool
+    slip: bool
+    length: float  # lumped nodal length (reference configuration)
+    slip_angle: float  # degrees between t and +WEIGHTED_SLIP (slip nodes; 0 otherwise)
+    slide: float  # u_x of the node minus u_x of the foundation's surface at the same x
+
+    @property
+    def stick(self) -> bool:
+        """ACTIVE and not SLIP."""
+        return self.active and not self.slip
+
+
+@dataclass
+class StepState:
+    """Newton iterations and the stick zone after one step."""
+
+    time: float
+    iterations: int
+    converged: bool
+    ratio: float  # Q'/(mu P') applied in the step
+    active: int
+    slipping: int
+    stick_half_width: float  # midpoint estimate, nan when no node slips
+    max_shear: float  # max |q| over the active nodes
+
+
+@dataclass
+class CattaneoMindlinResult:
+    """What one run measured, next to the analytic values."""
+
+    refinement: int | None
+    spacing: float  # slave node spacing over the contact
+    nodes: int
+    elements: int
+    mu: float
+    load: float  # P'
+    tangential_load: float  # Q'
+    applied_moment: float  # of the top loads about the contact point (0 up to round-off)
+    effective_modulus: float
+    a_analytic: float
+    p0_analytic: float
+    a: float  # moment estimate
+    p0: float  # semi-ellipse fit
+    c_right: float  # midpoint between the outermost stick node and the next node, x > 0
+    c_left: float  # same for x < 0 (negative)
+    c_deficit: float  # second moment of the deficit mu p - q
+    contact_tangential_force: float  # sum(q L) over the active nodes
+    contact_normal_force: float  # sum(p L)
+    base_reaction_x: float
+    coulomb_slip_deviation: float  # max | q / (mu p) - 1 | over the slip nodes
+    stick_max_ratio: float  # max q / (mu p) over the stick nodes
+    max_slip_angle: float  # max angle between t and +WEIGHTED_SLIP over the slip nodes
+    stick_contiguous: bool  # no slip node between two stick nodes
+    steps: list[StepState]
+    wall_time: float
+    profile: list[SlaveNode] = field(default_factory=list)
+
+    @property
+    def ratio(self) -> float:
+        """Q'/(mu P') applied."""
+        return self.tangential_load / (self.mu * self.load)
+
+    @property
+    def c_over_a_analytic(self) -> float:
+        """sqrt(1 - Q'/(mu P'))."""
+        return math.sqrt(1.0 - self.ratio)
+
+    @property
+    def c_analytic(self) -> float:
+        """Analytic stick half-width."""
+        return self.c_over_a_analytic * self.a_analytic
+
+    @property
+    def c(self) -> float:
+        """Stick half-width, midpoint estimate."""
+        return 0.5 * (self.c_right - self.c_left)
+
+    @property
+    def c_error(self) -> float:
+        """Relative error of c (and of c/a: the same a_analytic divides both)."""
+        return abs(self.c - self.c_analytic) / self.c_analytic
+
+    @property
+    def c_deficit_error(self) -> float:
+        """Relative error of the deficit estimate of c."""
+        return abs(self.c_deficit - self.c_analytic) / self.c_analytic
+
+    @property
+    def stick_offset(self) -> float:
+        """Centre of the stick set (0 by symmetry)."""
+        return 0.5 * (self.c_right + self.c_left)
+
+    @property
+    def a_error(self) -> float:
+        """Relative error of the contact half-width (moment estimate)."""
+        return abs(self.a - self.a_analytic) / self.a_analytic
+
+    @property
+    def p0_error(self) -> float:
+        """Relative error of the peak pressure."""
+        return abs(self.p0 - self.p0_analytic) / self.p0_analytic
+
+    @property
+    def tangential_force_error(self) -> float:
+        """Relative difference between sum(q L) and Q'."""
+        return abs(self.contact_tangential_force - self.tangential_load) / self.tangential_load
+
+    @property
+    def normal_phase_shear(self) -> float:
+        """Max |q| after the last normal-load step (t = 1), where the theory has none."""
+        pressed = [step for step in self.steps if step.time <= 1.0 + 1e-9]
+        return pressed[-1].max_shear if pressed else math.nan
+
+    @property
+    def iterations(self) -> list[int]:
+        """Newton iterations per step."""
+        return [step.iterations for step in self.steps]
+
+    @property
+    def converged(self) -> bool:
+        """Every step converged."""
+        return bool(self.steps) and all(step.converged for step in self.steps)
+
+    @property
+    def active(self) -> list[SlaveNode]:
+        """The ACTIVE slave nodes."""
+        return [node for node in self.profile if node.active]
+
+    def analytic_traction(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(p, q) of Hertz and Cattaneo-Mindlin at ``x``."""
+        a, c, p0 = self.a_analytic, self.c_analytic, self.p0_analytic
+        p = p0 * np.sqrt(np.clip(1.0 - (x / a) ** 2, 0.0, None))
+        stick = self.mu * p0 * (c / a) * np.sqrt(np.clip(1.0 - (x / c) ** 2, 0.0, None))
+        return p, self.mu * p - stick
+
+
+def stick_half_width(nodes: list[SlaveNode]) -> tuple[float, float]:
+    """(c_right, c_left): midpoints between the outermost stick nodes and their outer neighbours.
+
+    ``nodes`` sorted by x. nan when no node sticks or a stick node is the last slave node.
+    """
+    stick = [i for i, node in enumerate(nodes) if node.stick]
+    if not stick or stick[0] == 0 or stick[-1] == len(nodes) - 1:
+        return math.nan, math.nan
+    right = 0.5 * (nodes[stick[-1]].x + nodes[stick[-1] + 1].x)
+    left = 0.5 * (nodes[stick[0]].x + nodes[stick[0] - 1].x)
+    return right, left
+
+
+def slave_profile(main: ca.ModelPart) -> list[SlaveNode]:
+    """The contact state of every slave node, sorted by x."""
+    slave = main.GetSubModelPart("Contact_Slave")
+    master = sorted(main.GetSubModelPart("Contact_Master").Nodes, key=lambda node: node.X0)
+    master_x = np.array([node.X0 for node in master])
+    master_u = np.array([node.GetSolutionStepValue(ca.DISPLACEMENT_X) for node in master])
+    lengths: dict[int, float] = {}
+    for condition in slave.Conditions:
+        nodes = condition.GetNodes()
+        length = math.hypot(nodes[1].X0 - nodes[0].X0, nodes[1].Y0 - nodes[0].Y0)
+        for node in nodes:
+            lengths[node.Id] = lengths.get(node.Id, 0.0) + 0.5 * length
+    profile = []
+    for node in slave.Nodes:
+        traction = np.asarray(node.GetValue(ca.AUGMENTED_TANGENT_CONTACT_PRESSURE))[:2]
+        magnitude = float(np.linalg.norm(traction))
+        slip = np.asarray(node.GetSolutionStepValue(ca.WEIGHTED_SLIP))[:2]
+        angle = 0.0
+        if node.Is(ca.ACTIVE) and node.Is(ca.SLIP) and magnitude > 0.0:
+            cosine = traction @ slip / (magnitude * max(float(np.linalg.norm(slip)), 1e-300))
+            angle = math.degrees(math.acos(max(-1.0, min(1.0, float(cosine)))))
+        profile.append(
+            SlaveNode(
+                x=node.X0,
+                p=-node.GetValue(ca.AUGMENTED_NORMAL_CONTACT_PRESSURE),
+                q=math.copysign(magnitude, -traction[0]),
+                active=node.Is(ca.ACTIVE),
+                slip=node.Is(ca.SLIP),
+                length=lengths[node.Id],
+                slip_angle=angle,
+                slide=node.GetSolutionStepValue(ca.DISPLACEMENT_X)
+                - float(np.interp(node.X0, master_x, master_u)),
+            )
+        )
+    return sorted(profile, key=lambda node: node.x)
+
+
+class _RecordingAnalysis(StructuralMechanicsAnalysis):
+    """The analysis, recording the stick zone after every step."""
+
+    def __init__(self, *args, full_ratio: float, **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self.full_ratio = full_ratio
+        self.states: list[StepState] = []
+
+    def FinalizeSolutionStep(self) -> None:  # noqa: N802 - Kratos name
+        super().FinalizeSolutionStep()
+        record = self.reporter.steps[-1]
+        profile = slave_profile(self.model.GetModelPart("Structure"))
+        right, left = stick_half_width(profile)
+        if not any(node.active and node.slip for node in profile):
+            right = left = math.nan
+        self.states.append(
+            StepState(
+                time=record.time,
+                iterations=record.iterations,
+                converged=record.converged,
+                ratio=self.full_ratio * min(max(record.time - 1.0, 0.0), 1.0),
+                active=sum(node.active for node in profile),
+                slipping=sum(node.active and node.slip for node in profile),
+                stick_half_width=0.5 * (right - left),
+                max_shear=max((abs(node.q) for node in profile if node.active), default=0.0),
+            )
+        )
+
+
+def _applied_loads(main: ca.ModelPart) -> tuple[float, float, float]:
+    """(P', Q', moment about the contact point) of the top's LINE_LOAD conditions."""
+    fx = fy = moment = 0.0
+    for condition in main.GetSubModelPart("LineLoad2D_top").Conditions:
+        nodes = condition.GetNodes()
+        length = math.hypot(nodes[1].X0 - nodes[0].X0, nodes[1].Y0 - nodes[0].Y0)
+        force = np.asarray(condition.GetValue(ca.LINE_LOAD)) * length
+        xc = 0.5 * (nodes[0].X0 + nodes[1].X0)
+        yc = 0.5 * (nodes[0].Y0 + nodes[1].Y0)
+        fx += force[0]
+        fy += force[1]
+        moment += xc * force[1] - yc * force[0]
+    return -fy, fx, moment
+
+
+def evaluate(analysis: _RecordingAnalysis, materials: Path, mu: float) -> CattaneoMindlinResult:
+    """Measure a, p0, c and the forces on a finished analysis."""
+    main = analysis.model.GetModelPart("Structure")
+    load, tangential, moment = _applied_loads(main)
+    modulus = effective_modulus(materials)
+    a_analytic = math.sqrt(4.0 * load * make_mesh.RADIUS / (math.pi * modulus))
+    profile = slave_profile(main)
+    active = [node for node in profile if node.active]
+    x = np.array([node.x for node in active])
+    p = np.array([node.p for node in active])
+    q = np.array([node.q for node in active])
+    length = np.array([node.length for node in active])
+    if len(active) >= 2:
+        a = second_moment_width(x, p * length, 4.0)
+        _, p0 = fit_elliptic_profile(x, p, "semi-ellipse")
+        deficit = np.clip(mu * p - np.abs(q), 0.0, None) * length
+        c_deficit = second_moment_width(x, deficit, 4.0) if deficit.sum() > 0.0 else math.nan
+    else:
+        a = p0 = c_deficit = math.nan
+    right, left = stick_half_width(profile)
+    slipping = [node for node in active if node.slip]
+    sticking = [node for node in active if not node.slip]
+    stick_x = [node.x for node in sticking]
+    inside = [node for node in active if stick_x and min(stick_x) <= node.x <= max(stick_x)]
+    base = main.GetSubModelPart("DISPLACEMENT_fixed_base")
+    xs = np.array([node.x for node in profile])
+    centre = int(np.argmin(np.abs(xs)))
+    return CattaneoMindlinResult(
+        refinement=None,
+        spacing=float(xs[centre + 1] - xs[centre]),
+        nodes=main.NumberOfNodes(),
+        elements=main.NumberOfElements(),
+        mu=mu,
+        load=load,
+        tangential_load=tangential,
+        applied_moment=moment,
+        effective_modulus=modulus,
+        a_analytic=a_analytic,
+        p0_analytic=2.0 * load / (math.pi * a_analytic),
+        a=a,
+        p0=p0,
+        c_right=right,
+        c_left=left,
+        c_deficit=c_deficit,
+        contact_tangential_force=float(np.sum(q * length)),
+        contact_normal_force=float(np.sum(p * length)),
+        base_reaction_x=sum(node.GetSolutionStepValue(ca.REACTION_X) for node in base.Nodes),
+        coulomb_slip_deviation=max(
+            (abs(abs(n.q) / (mu * n.p) - 1.0) for n in slipping), default=0.0
+        ),
+        stick_max_ratio=max((abs(n.q) / (mu * n.p) for n in sticking), default=0.0),
+        max_slip_angle=max((n.slip_angle for n in slipping), default=0.0),
+        stick_contiguous=all(not node.slip for node in inside),
+        steps=analysis.states,
+        wall_time=0.0,
+        profile=profile,
+    )
+
+
+def run(
+    workdir: Path,
+    refinement: int | None = None,
+    ratio: float = DEFAULT_RATIO,
+    quiet: bool = True,
+) -> CattaneoMindlinResult:
+    """Run the example in ``workdir`` with Q'/(mu P') = ``ratio``.
+
+    The mesh is written there at level ``refinement``, or at DEFAULT_REFINEMENT when
+    ``refinement`` is None and no mesh exists; otherwise the existing mesh is used. The loads of
+    the parameters file are replaced by ``load_values(ratio, mu)``.
+    """
+    workdir = Path(workdir).resolve()
+    mesh = workdir / MESH
+    if refinement is None and not mesh.exists():
+        refinement = DEFAULT_REFINEMENT
+    if refinement is not None:
+        make_mesh.write_mesh(mesh, refinement)
+    parameters_path, materials = example_inputs(workdir, HERE)
+    parameters = json.loads(parameters_path.read_text(encoding="utf-8"))
+    parameters["solver_settings"]["material_import_settings"]["materials_filename"] = str(materials)
+    mu = friction_coefficient(parameters)
+    load_process = parameters["processes"]["loads_process_list"][0]["Parameters"]
+    load_process["value"] = load_values(ratio, mu)
+    with working_directory(workdir):
+        start = time.perf_counter()
+        analysis = _RecordingAnalysis(
+            ca.Model(),
+            parameters,
+            base_dir=parameters_path.parent,
+            reporter=Reporter(quiet=quiet),
+            full_ratio=ratio,
+        )
+        analysis.Run()
+        elapsed = time.perf_counter() - start
+    result = evaluate(analysis, materials, mu)
+    result.refinement = refinement  # None: an existing mesh of unknown level was reused
+    result.wall_time = elapsed
+    return result
+
+
+def _step_line(step: StepState, a: float) -> str:
+    """One step: iterations, and in the tangential steps the stick zone against the theory."""
+    text = f"    t = {step.time:g}: {step.iterations} iterations, {step.active} active"
+    if step.time > 1.0 + 1e-9:
+        text += f", {step.slipping} slip"
+        analytic = math.sqrt(1.0 - step.ratio)
+        if math.isnan(step.stick_half_width):
+            text += f", c/a analytic {analytic:.3f}"
+        else:
+            text += f", c/a {step.stick_half_width / a:.3f} (analytic {analytic:.3f})"
+    return text + ("" if step.converged else ", NOT CONVERGED")
+
+
+def summary(result: CattaneoMindlinResult) -> str:
+    """The text summary of a run."""
+    r = result
+    status = "all steps converged" if r.converged else "NOT CONVERGED"
+    level = "" if r.refinement is None else f", refinement {r.refinement}"
+    stick = [n.x for n in r.active if not n.slip]
+    slips = sum(n.slip for n in r.active)
+    mu_p0 = r.mu * r.p0_analytic
+    lines = [
+        "cattaneo_mindlin_2d: Cattaneo-Mindlin partial slip, cylinder on an elastic foundation,",
+        f"  plane strain, ALM frictional mortar, mu = {r.mu:g} (units: mm, N, MPa)",
+        f"  R = {make_mesh.RADIUS:g}, P' = {r.load:.6g}, Q' = {r.tangential_load:.6g} "
+        f"(Q'/(mu P') = {r.ratio:.4g}), E* = {r.effective_modulus:.6g}",
+        f"  mesh: {r.nodes} nodes, {r.elements} quads{level}, contact spacing h = {r.spacing:.4g} "
+        f"(a/h = {r.a_analytic / r.spacing:.1f}, c/h = {r.c_analytic / r.spacing:.1f})",
+        f"  half-width a (moment): computed {r.a:.6g}, analytic {r.a_analytic:.6g}, "
+        f"error {100 * r.a_error:.2f} %",
+        f"  peak pressure p0 (fit): computed {r.p0:.6g}, analytic {r.p0_analytic:.6g}, "
+        f"error {100 * r.p0_error:.2f} %",
+        "  stick half-width c (midpoint between the outermost stick node and the next, a slip "
+        "node, on each side):",
+        f"    c = {r.c:.6g}, c/a = {r.c / r.a_analytic:.4f}, analytic sqrt(1 - Q'/(mu P')) = "
+        f"{r.c_over_a_analytic:.4f}, error {100 * r.c_error:.2f} % (h/(2c) = "
+        f"{100 * r.spacing / (2.0 * r.c_analytic):.2f} %)",
+        f"    {len(stick)} stick nodes, x in [{min(stick, default=math.nan):.5g}, "
+        f"{max(stick, default=math.nan):.5g}], {slips} slip nodes, stick centre "
+        f"{r.stick_offset:.3g}, contiguous: {r.stick_contiguous}",
+        f"  stick half-width c (second moment of mu p - |q|): {r.c_deficit:.6g}, "
+        f"c/a = {r.c_deficit / r.a_analytic:.4f}, error {100 * r.c_deficit_error:.2f} %",
+        f"  tangential force: sum(q L) = {r.contact_tangential_force:.7g} vs Q' = "
+        f"{r.tangential_load:.7g} ({r.contact_tangential_force / r.tangential_load - 1.0:+.2e}), "
+        f"base reaction {r.base_reaction_x:.7g}",
+        f"  normal force: sum(p L) = {r.contact_normal_force:.7g} vs P' = {r.load:.7g} "
+        f"({r.contact_normal_force / r.load - 1.0:+.2e})",
+        f"  Coulomb: slip nodes max | |q|/(mu p) - 1 | = {r.coulomb_slip_deviation:.2e}, stick "
+        f"nodes max |q|/(mu p) = {r.stick_max_ratio:.4f}",
+        f"  slip nodes: max angle between t and +WEIGHTED_SLIP {r.max_slip_angle:.2e} deg",
+        f"  shear left by the normal steps (t = 1; none in the theory): max |q| = "
+        f"{r.normal_phase_shear:.4g} = {100 * r.normal_phase_shear / mu_p0:.1f} % of mu p0",
+        f"  active slave nodes: {len(r.active)}",
+        f"  Newton iterations: {sum(r.iterations)} (per step {', '.join(map(str, r.iterations))}),"
+        f" {status}",
+        *(_step_line(step, r.a_analytic) for step in r.steps),
+        f"  wall time: {r.wall_time:.2f} s",
+    ]
+    return "\n".join(lines)
+
+
+def write_outputs(result: CattaneoMindlinResult, workdir: Path) -> str:
+    """Write the summary and the plot into ``workdir``; return the summary."""
+    text = summary(result)
+    (workdir / SUMMARY).write_text(text + "\n", encoding="utf-8")
+    plot(result, workdir / PLOT)
+    return text
+
+
+def plot(result: CattaneoMindlinResult, path: Path) -> None:
+    """Normal and shear traction of the slave nodes vs Hertz and Cattaneo-Mindlin."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    r = result
+    x_max = 1.5 * r.a_analytic
+    curve = np.linspace(-r.a_analytic, r.a_analytic, 801)
+    p, q = r.analytic_traction(curve)
+    fig, axis = plt.subplots(figsize=(8.0, 5.0))
+    axis.plot(curve, p, "k-", label="Hertz p (analytic)")
+    axis.plot(curve, r.mu * p, "k:", label="μ p (analytic)")
+    axis.plot(curve, q, "C0-", label="Cattaneo–Mindlin q (analytic)")
+    shown = [n for n in r.profile if abs(n.x) <= x_max]
+    active = [n for n in shown if n.active]
+    axis.plot([n.x for n in active], [n.p for n in active], "ko", mfc="none", label="p, active")
+    stick = [n for n in active if not n.slip]
+    slip = [n for n in active if n.slip]
+    axis.plot([n.x for n in stick], [n.q for n in stick], "C2s", label="q, stick nodes")
+    axis.plot([n.x for n in slip], [n.q for n in slip], "C3^", label="q, slip nodes")
+    axis.plot(
+        [n.x for n in shown if not n.active],
+        [0.0 for n in shown if not n.active],
+        "x",
+        color="grey",
+        label="inactive",
+    )
+    for sign in (-1.0, 1.0):
+        axis.axvline(sign * r.c_analytic, color="C0", linestyle="--", linewidth=0.8)
+    axis.axvline(r.c_right, color="C2", linestyle=":", linewidth=1.0)
+    axis.axvline(r.c_left, color="C2", linestyle=":", linewidth=1.0, label="c measured (midpoint)")
+    axis.set_xlabel("x, distance from the contact centre (mm)")
+    axis.set_ylabel("traction (MPa)")
+    axis.set_title(
+        f"Cattaneo–Mindlin, Q'/(μP') = {r.ratio:.3g}: c/a = {r.c / r.a_analytic:.3f} "
+        f"(analytic {r.c_over_a_analytic:.3f}, error {100 * r.c_error:.1f} %)"
+    )
+    axis.set_xlim(-x_max, x_max)
+    axis.set_ylim(0.0, 1.3 * r.p0_analytic)
+    axis.grid(True, alpha=0.3)
+    axis.legend(fontsize=8, loc="upper center", ncol=3)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run, write the plot and the summary, print the summary; 1 if a step did not converge."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument(
+        "--refinement", type=int, help="write the mesh at this level (1 = coarsest)"
+    )
+    parser.add_argument(
+        "--ratio",
+        type=float,
+        default=DEFAULT_RATIO,
+        help=f"Q'/(mu P'), in (0, 1) (default {DEFAULT_RATIO})",
+    )
+    parser.add_argument("--quiet", action="store_true", help="no step table")
+    args = parser.parse_args(argv)
+    workdir = Path.cwd()
+    result = run(workdir, args.refinement, args.ratio, quiet=args.quiet)
+    text = write_outputs(result, workdir)
+    print(text)
+    print(f"outputs: {workdir / PLOT}, {workdir / SUMMARY}, {workdir / 'vtk_output'}")
+    return 0 if result.converged else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
