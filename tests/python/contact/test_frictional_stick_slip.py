@@ -75,6 +75,9 @@ class StepState:
     max_traction_slip_angle: float = 0.0  # degrees, over the slipping nodes
     min_traction_slip_power: float = 1.0  # min of t.s / (|t| |s|) over the slipping nodes
     max_slip_x_angle: float = 0.0  # degrees between WEIGHTED_SLIP and the x axis
+    #: Matching meshes: max |u_x(slave) - u_x(master node at the same place)| and the largest |u_x|.
+    max_tangential_mismatch: float = 0.0
+    max_tangential_displacement: float = 0.0
 
 
 def _current_area(nodes: list) -> float:
@@ -121,6 +124,17 @@ class _SteppedAnalysis(StructuralMechanicsAnalysis):
         super().FinalizeSolutionStep()
         part = self.model.GetModelPart
         slave = list(part("Structure.Contact_Slave").Nodes)
+        master = {
+            (round(n.X0, 9), round(n.Y0, 9), round(n.Z0, 9)): n
+            for n in part("Structure.Contact_Master").Nodes
+        }
+        mismatch, largest = 0.0, 0.0
+        for node in slave:
+            partner = master.get((round(node.X0, 9), round(node.Y0, 9), round(node.Z0, 9)))
+            ux = node.GetSolutionStepValue(ca.DISPLACEMENT_X)
+            largest = max(largest, abs(ux))
+            if partner is not None:
+                mismatch = max(mismatch, abs(ux - partner.GetSolutionStepValue(ca.DISPLACEMENT_X)))
         active = [n for n in slave if n.Is(ca.ACTIVE)]
         ratios = [
             np.linalg.norm(n.GetValue(ca.AUGMENTED_TANGENT_CONTACT_PRESSURE))
@@ -155,6 +169,8 @@ class _SteppedAnalysis(StructuralMechanicsAnalysis):
                 max_traction_slip_angle=max(angles),
                 min_traction_slip_power=min(powers),
                 max_slip_x_angle=max(slip_x),
+                max_tangential_mismatch=mismatch,
+                max_tangential_displacement=largest,
                 max_normal_x=max(abs(n.GetSolutionStepValue(ca.NORMAL_X)) for n in active),
                 max_normal_y=(
                     max(abs(n.GetSolutionStepValue(ca.NORMAL_Y)) for n in active)
@@ -361,20 +377,22 @@ def run_stick_slip(
     foundation_divisions: tuple[int, ...] = NON_MATCHING,
     move_mesh: bool = True,
     residual_tolerance: float = TOLERANCE,
+    tangent_factor: float | None = None,
 ) -> list[StepState]:
     """Write and run the case (2D or 3D by the divisions); the state after each of the steps."""
     dimension = len(foundation_divisions)
+    directory.mkdir(parents=True, exist_ok=True)
     if dimension == 3:
         _write_case_3d(directory, foundation_divisions, mu)
     else:
         _write_case(directory, foundation_divisions, mu)
+    parameters = _parameters(directory, mortar_type, dimension, move_mesh, residual_tolerance)
+    if tangent_factor is not None:
+        contact = parameters["processes"]["contact_process_list"][0]["Parameters"]
+        contact["tangent_factor"] = tangent_factor
     analysis = _SteppedAnalysis(
         ca.Model(),
-        Parameters(
-            json.dumps(
-                _parameters(directory, mortar_type, dimension, move_mesh, residual_tolerance)
-            )
-        ),
+        Parameters(json.dumps(parameters)),
         reporter=Reporter(quiet=True),
         dimension=dimension,
     )
@@ -481,6 +499,37 @@ def test_alm_frictional_sliding_on_a_fixed_mesh(
         assert state.min_traction_slip_power > 0.999
         # No moved mesh: the interface keeps its reference normal, so the bound is round-off.
         assert abs(state.tangential_force / (MU * state.base_reaction) - 1.0) <= 1.0e-9
+
+
+def test_stuck_contact_nodes_move_with_the_master(tmp_path: Path) -> None:
+    """Stick means no relative tangential motion.
+
+    On the matching interface every slave node's u_x equals that of the foundation node at the same
+    place. ALM enforces it exactly (measured 1.5e-22 against |u_x| up to 4e-8 after the push);
+    penalty friction only to its regularisation, the elastic slip tau / (kappa eps), which shrinks
+    as the stick penalty grows: 3.9e-9 and 5.1e-10 for kappa = 1e-3 and 1e-2. (Stiffer still, the
+    stick steps reach the residual floor of PENALTY_RESIDUAL_TOLERANCE.)
+    """
+    alm = run_stick_slip(tmp_path / "alm", foundation_divisions=MATCHING)[STICK_STEP - 1]
+    assert alm.slipping == 0 and alm.max_tangential_displacement > 1.0e-9
+    assert alm.max_tangential_mismatch < 1.0e-9 * alm.max_tangential_displacement
+    mismatches = []
+    for kappa in (1.0e-3, 1.0e-2):
+        directory = tmp_path / f"penalty_{kappa}"
+        states = run_stick_slip(
+            directory,
+            "PenaltyContactFrictional",
+            foundation_divisions=MATCHING,
+            residual_tolerance=PENALTY_RESIDUAL_TOLERANCE,
+            tangent_factor=kappa,
+        )
+        state = states[STICK_STEP - 1]
+        assert state.record.converged and state.slipping == 0
+        mismatches.append(state.max_tangential_mismatch)
+    print(f"stick mismatch ALM {alm.max_tangential_mismatch:.2e}, penalty {mismatches}")
+    assert mismatches[0] < 0.1 * alm.max_tangential_displacement
+    # Tenfold stiffer: the elastic slip is 7.6x smaller (the stick tractions redistribute a little).
+    assert mismatches[1] < 0.2 * mismatches[0]
 
 
 @pytest.fixture(scope="module")
