@@ -1,9 +1,9 @@
-"""Friction in a real user's model of the reference's example collection (2D press fit, ALM frictional).
+"""Friction in a user's model of the reference's example collection (2D press fit, ALM frictional).
 
 The model gives mu only in the contact process ("friction_coefficients"), and its interface
 conditions carry properties of their own without FRICTION_COEFFICIENT. mu used to be averaged from
-those properties (0, with a warning) and the setting was ignored: mu = 0.1 and 0.5 gave bit-identical
-runs. Here the first 20 steps (t = 0.02) run with each value.
+those properties (0, with a warning) and the setting was ignored: mu = 0.1 and 0.5 gave
+bit-identical runs. Here the first 20 steps (t = 0.02) run with each value.
 """
 
 from __future__ import annotations
