@@ -1,0 +1,89 @@
+"""The cattaneo_mindlin_3d example: Mindlin partial slip of a sphere under P, then Q < mu P.
+
+Analytic values (Johnson, Contact Mechanics, 7.2): a = (3 P R / (4 E*))^(1/3),
+c/a = (1 - Q/(mu P))^(1/3). The fast tests check the mirrored mesh and the load couple; the
+run test checks the Coulomb law at every slipping node of every step, the friction force and
+the stick radius on the default level.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import math
+import shutil
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+EXAMPLE = Path(__file__).parents[3] / "examples" / "cattaneo_mindlin_3d"
+ANGLE_TOLERANCE = 0.1  # degrees
+
+
+def _load(name: str):
+    spec = importlib.util.spec_from_file_location(
+        f"cattaneo_mindlin_3d_{name}", EXAMPLE / f"{name}.py"
+    )
+    module = importlib.util.module_from_spec(spec)
+    assert spec.loader is not None
+    sys.modules[spec.name] = module  # dataclasses look their module up there
+    spec.loader.exec_module(module)
+    return module
+
+
+def _copy_inputs(directory: Path) -> None:
+    for name in ("ProjectParameters.json", "materials.json"):
+        shutil.copy(EXAMPLE / name, directory / name)
+
+
+def test_mirrored_mesh_is_the_hertz_3d_mesh_twice() -> None:
+    make_mesh = _load("make_mesh")
+    mesh = make_mesh.build(1)
+    quarter = make_mesh.hertz_mesh.build(1)
+    on_plane = np.count_nonzero(np.abs(quarter.points[:, 0]) < 1e-9)
+    assert len(mesh.points) == 2 * len(quarter.points) - on_plane
+    hexes = make_mesh.hertz_mesh.hexahedra(mesh)
+    assert len(hexes) == 2 * len(make_mesh.hertz_mesh.hexahedra(quarter))
+    assert make_mesh.hertz_mesh.jacobians(mesh.points, hexes).min() > 0.0
+    top = np.vstack([block.data for block in mesh.cells if block.type == "quad"])
+    a, b, c = (mesh.points[top[:, k]] for k in range(3))
+    assert np.all(np.cross(b - a, c - a)[:, 2] > 0.0)  # outward after mirroring
+
+
+def test_load_couple_cancels_the_moment_of_q() -> None:
+    module = _load("run_cattaneo_mindlin_3d")
+    mesh = module.make_mesh.build(1)
+    top = np.vstack([block.data for block in mesh.cells if block.type == "quad"])
+    area, moment = module.top_integrals(mesh.points, top)
+    # The meshed half disc and its integral of |x| (2 R^3 / 3 for the exact one), a bit under.
+    radius = module.make_mesh.RADIUS
+    assert 0.97 * math.pi * radius**2 / 2 < area < math.pi * radius**2 / 2
+    assert 0.97 * 2 * radius**3 / 3 < moment < 2 * radius**3 / 3
+    shear, _, normal = module.load_values(0.5, 0.3, area, moment)
+    assert shear.startswith("1.5*")
+    couple = float(normal.split("+ ")[1].split("*")[0])
+    assert couple * moment == pytest.approx(1.5 * area * radius, rel=1e-12)
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason=(
+        "the frictional ALM does not converge on this curved 3D interface: level 1 (a/h = 1.5, "
+        "tangent_factor 10) leaves 91 % of mu p0 of shear after the normal steps, steps 6 and 7 "
+        "stop at 30 iterations and a slip node's traction is 180 deg from its slip; with "
+        "tangent_factor 1 the normal steps already cycle (README)"
+    ),
+)
+def test_cattaneo_mindlin_3d_coarsest_mesh_obeys_coulomb(tmp_path: Path) -> None:
+    _copy_inputs(tmp_path)
+    result = _load("run_cattaneo_mindlin_3d").run(tmp_path, 1)
+    assert result.converged, result.iterations
+    for step in result.steps:
+        if step.slipping:
+            assert step.max_slip_angle < ANGLE_TOLERANCE, step
+            assert step.min_power > 0.0, step
+            assert step.coulomb_deviation < 1e-6, step
+    assert result.friction_force[0] == pytest.approx(result.tangential_load, rel=1e-3)
+    assert result.zone.separated
+    assert result.c_error < 0.2
