@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_utilities/active_set_utilities.h"
 
+#include <algorithm>
 #include <limits>
 #include <vector>
 
@@ -116,12 +117,26 @@ std::size_t ComputeALMFrictionlessComponentsActiveSet(ModelPart& model_part) {
 
 namespace {
 
-/// Counts a slip node whose direction turned since the build (TANGENT_XI, set before it) as a slip-set change:
-/// Newton must not stop while the direction still turns (docs/theory/mortar.md §8).
-bool Turned(const Node& node, const Array3& direction) {
-    if (!node.Has(TANGENT_XI) || direction.norm() == 0.0) return false;
+/// Whether a slip node's direction turned since the build (TANGENT_XI, set before it) by more than
+/// kSlipDirectionTolerance, weighted by its share of the largest friction bound @p largest_bound: Newton must not stop
+/// while a direction still turns, but the direction of a node that carries (almost) no friction, e.g. at the edge of
+/// a Hertzian contact where the pressure vanishes, is round-off and may turn freely (docs/theory/mortar.md §8).
+bool Turned(const Node& node, const Array3& direction, double bound, double largest_bound) {
+    if (!node.Has(TANGENT_XI) || direction.norm() == 0.0 || !(largest_bound > 0.0)) return false;
     const Array3& previous = node.GetValue(TANGENT_XI);
-    return previous.norm() > 0.0 && (previous / previous.norm() - direction).norm() > kSlipDirectionTolerance;
+    return previous.norm() > 0.0 &&
+           (previous / previous.norm() - direction).norm() * bound > kSlipDirectionTolerance * largest_bound;
+}
+
+/// max over the slave nodes to update of μ |λ̄n|, with λ̄n as @p transmitted_normal computes it.
+template <class TNormal>
+double LargestFrictionBound(const std::vector<Node*>& nodes, TNormal&& transmitted_normal) {
+    double largest = 0.0;
+    for (Node* node : nodes) {
+        const double normal = transmitted_normal(*node);
+        if (normal < 0.0) largest = std::max(largest, -node->GetValue(FRICTION_COEFFICIENT) * normal);
+    }
+    return largest;
 }
 
 }  // namespace
@@ -143,7 +158,11 @@ Array3 TrialTangentialTraction(const Node& node, const ProcessInfo& process_info
 std::array<std::size_t, 2> ComputePenaltyFrictionalActiveSet(ModelPart& model_part, bool pure_slip) {
     const ProcessInfo& process_info = model_part.GetProcessInfo();
     std::array<std::size_t, 2> flips{0, 0};
-    for (Node* node : SlaveNodesToUpdate(model_part)) {
+    const std::vector<Node*> nodes = SlaveNodesToUpdate(model_part);
+    const double largest_bound = LargestFrictionBound(nodes, [&](Node& node) {
+        return Penalty(node, process_info) * ContactUtilities::TransmittedWeightedGap(node);
+    });
+    for (Node* node : nodes) {
         const double penalty = Penalty(*node, process_info);
         const double transmitted_normal = penalty * ContactUtilities::TransmittedWeightedGap(*node);
         node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, transmitted_normal);
@@ -164,7 +183,7 @@ std::array<std::size_t, 2> ComputePenaltyFrictionalActiveSet(ModelPart& model_pa
                        slip ? Array3(-mu * transmitted_normal * Direction(trial)) : trial);
         const std::size_t changed = UpdateSlip(*node, slip);
         if (!pure_slip) flips[1] += changed;
-        if (slip && was_slip && Turned(*node, Direction(trial))) ++flips[1];
+        if (slip && was_slip && Turned(*node, Direction(trial), -mu * transmitted_normal, largest_bound)) ++flips[1];
     }
     return flips;
 }
@@ -174,7 +193,13 @@ std::array<std::size_t, 2> ComputeALMFrictionalActiveSet(ModelPart& model_part, 
     const double k = ScaleFactor(process_info, "ComputeALMFrictionalActiveSet");
     const double slip_threshold = process_info.GetValue(SLIP_THRESHOLD);
     std::array<std::size_t, 2> flips{0, 0};
-    for (Node* node : SlaveNodesToUpdate(model_part)) {
+    const std::vector<Node*> nodes = SlaveNodesToUpdate(model_part);
+    const double largest_bound = LargestFrictionBound(nodes, [&](Node& node) {
+        const Array3 normal = NodalValue(node, NORMAL);
+        return k * normal.dot(NodalValue(node, VECTOR_LAGRANGE_MULTIPLIER)) +
+               Penalty(node, process_info) * ContactUtilities::TransmittedWeightedGap(node);
+    });
+    for (Node* node : nodes) {
         const double penalty = Penalty(*node, process_info);
         Array3& lambda = NodalValue(*node, VECTOR_LAGRANGE_MULTIPLIER);
         const Array3 normal = NodalValue(*node, NORMAL);
@@ -206,7 +231,9 @@ std::array<std::size_t, 2> ComputeALMFrictionalActiveSet(ModelPart& model_part, 
                        slip ? Array3(-mu * transmitted_normal * Direction(trial)) : trial);
         const std::size_t changed = UpdateSlip(*node, slip);
         if (!pure_slip) flips[1] += changed;
-        if (slip && was_slip && mu >= kMachineEpsilon && Turned(*node, Direction(trial))) ++flips[1];
+        if (slip && was_slip && mu >= kMachineEpsilon &&
+            Turned(*node, Direction(trial), -mu * transmitted_normal, largest_bound))
+            ++flips[1];
     }
     return flips;
 }

@@ -23,12 +23,14 @@ class ProcessInfo;
 /// Deviations (docs/theory/mortar.md §8): the stick/slip test and the slip direction use the trial traction λ̄τ of
 /// TrialTangentialTraction on every node (the reference scales its slip term by SLIP_AUGMENTATION_COEFFICIENT, 0 by
 /// default, on slipping nodes, and takes the direction from λτ alone, which never turns in 3D); a slip node whose
-/// direction turned by more than kSlipDirectionTolerance since the build counts as a slip-set change; the penalty
+/// direction turned by more than kSlipDirectionTolerance (weighted by its friction bound) since the build counts as a
+/// slip-set change; the penalty
 /// slip traction has the orientation of its stick value (reference [BUG?] B10); an ALM node with μ < machine ε
 /// always slips (the reference's Coulomb test is 0/0 there and the node flips between stick and slip).
 namespace ActiveSetUtilities {
 
-/// |t_new − t_build| (unit vectors) above which a slipping node has turned (radians, ≈ 0.006°).
+/// |t_new − t_build| (unit vectors, ≈ radians) above which a slipping node has turned, scaled by the node's share
+/// μ|λ̄n| / max_j μ|λ̄n,j| of the largest friction bound (a node without friction may turn freely).
 inline constexpr double kSlipDirectionTolerance = 1e-4;
 
 /// The trial tangential traction of a slave node: λ̄τ = k Pλ + κ ε P ũτ (ALM, @p with_multiplier) or
