@@ -1,4 +1,7 @@
-"""What the 2D and 3D Hertz examples share: mesh grading and gmsh groups, width estimates, E*.
+"""What the Hertz and Cattaneo-Mindlin examples share: meshing, width estimates, E*, settings.
+
+Mesh grading and gmsh groups, the contact width estimates, E*, loading a folder's script by path
+and the contact process settings.
 
 Both examples measure an elliptic pressure profile p(c) = p0 sqrt(1 - c^2/w^2) (c = x in 2D, the
 radius r in 3D; w = b or a) two ways: a least-squares fit of p^2 against c^2, and the second
@@ -10,9 +13,11 @@ depend on where the contact edge falls between two nodes.
 from __future__ import annotations
 
 import contextlib
+import importlib.util
 import json
 import math
 import os
+import sys
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -138,3 +143,31 @@ def working_directory(path: Path) -> Iterator[None]:
         yield
     finally:
         os.chdir(previous)
+
+
+def load_script(name: str, path: Path):
+    """The Python file ``path`` as the module ``name`` (loaded once).
+
+    Every example folder has a make_mesh.py: a plain ``import make_mesh`` would reuse whichever one
+    a process (pytest, say) imported first, so each is loaded under a name of its own.
+    """
+    if name not in sys.modules:
+        spec = importlib.util.spec_from_file_location(name, path)
+        module = importlib.util.module_from_spec(spec)
+        assert spec.loader is not None
+        sys.modules[name] = module
+        spec.loader.exec_module(module)
+    return sys.modules[name]
+
+
+def contact_parameters(parameters: dict) -> dict:
+    """The Parameters block of the ALM contact process of a ProjectParameters tree."""
+    for process in parameters["processes"]["contact_process_list"]:
+        if process["python_module"] == "alm_contact_process":
+            return process["Parameters"]
+    raise ValueError("no alm_contact_process in processes.contact_process_list")
+
+
+def friction_coefficient(parameters: dict) -> float:
+    """Mu of the pair "0" of the contact process."""
+    return float(contact_parameters(parameters)["friction_coefficients"]["0"])

@@ -16,7 +16,6 @@ Physical groups: ``cylinder`` and ``foundation`` (quads), ``load_top`` (lines of
 from __future__ import annotations
 
 import argparse
-import importlib.util
 import sys
 from pathlib import Path
 
@@ -25,20 +24,10 @@ import numpy as np
 
 HERTZ_2D = Path(__file__).resolve().parent.parent / "hertz_2d"
 
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+from hertz_common import load_script  # noqa: E402  (examples/hertz_common.py)
 
-def _hertz_mesher():
-    """examples/hertz_2d/make_mesh.py under a name of its own (this file is make_mesh.py too)."""
-    name = "hertz_2d_make_mesh"
-    if name not in sys.modules:
-        spec = importlib.util.spec_from_file_location(name, HERTZ_2D / "make_mesh.py")
-        module = importlib.util.module_from_spec(spec)
-        assert spec.loader is not None
-        sys.modules[name] = module
-        spec.loader.exec_module(module)
-    return sys.modules[name]
-
-
-hertz_mesh = _hertz_mesher()
+hertz_mesh = load_script("hertz_2d_make_mesh", HERTZ_2D / "make_mesh.py")
 RADIUS = hertz_mesh.RADIUS
 FINE_LENGTH = hertz_mesh.FINE_LENGTH
 

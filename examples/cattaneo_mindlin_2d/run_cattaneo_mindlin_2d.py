@@ -39,7 +39,6 @@ when every step converged, 1 otherwise.
 from __future__ import annotations
 
 import argparse
-import importlib.util
 import json
 import math
 import sys
@@ -59,28 +58,13 @@ from hertz_common import (  # noqa: E402  (examples/hertz_common.py)
     effective_modulus,
     example_inputs,
     fit_elliptic_profile,
+    friction_coefficient,
+    load_script,
     second_moment_width,
     working_directory,
 )
 
-
-def _mesher():
-    """make_mesh.py of this folder under a name of its own.
-
-    hertz_2d and hertz_3d have a make_mesh.py too: a plain ``import make_mesh`` would reuse
-    whichever one a process (pytest, say) imported first.
-    """
-    name = "cattaneo_mindlin_2d_make_mesh"
-    if name not in sys.modules:
-        spec = importlib.util.spec_from_file_location(name, HERE / "make_mesh.py")
-        module = importlib.util.module_from_spec(spec)
-        assert spec.loader is not None
-        sys.modules[name] = module
-        spec.loader.exec_module(module)
-    return sys.modules[name]
-
-
-make_mesh = _mesher()
+make_mesh = load_script("cattaneo_mindlin_2d_make_mesh", HERE / "make_mesh.py")
 
 MESH = "cattaneo_mindlin_2d.msh"
 PLOT = "cattaneo_mindlin_2d_traction.png"
@@ -104,19 +88,6 @@ def load_values(ratio: float, mu: float) -> list[str | float]:
         f"-{LINE_PRESSURE:.12g}*min(t, 1.0) + {couple:.12g}*x/abs(x)*{RAMP}",
         0.0,
     ]
-
-
-def contact_parameters(parameters: dict) -> dict:
-    """The Parameters block of the ALM contact process of a ProjectParameters tree."""
-    for process in parameters["processes"]["contact_process_list"]:
-        if process["python_module"] == "alm_contact_process":
-            return process["Parameters"]
-    raise ValueError("no alm_contact_process in processes.contact_process_list")
-
-
-def friction_coefficient(parameters: dict) -> float:
-    """Mu of the pair "0" of the contact process."""
-    return float(contact_parameters(parameters)["friction_coefficients"]["0"])
 
 
 @dataclass

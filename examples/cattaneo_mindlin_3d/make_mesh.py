@@ -16,7 +16,6 @@ points). hertz_3d's ``symmetry_x`` group is dropped: the loading is not symmetri
 from __future__ import annotations
 
 import argparse
-import importlib.util
 import sys
 from pathlib import Path
 
@@ -25,20 +24,10 @@ import numpy as np
 
 HERTZ_3D = Path(__file__).resolve().parent.parent / "hertz_3d"
 
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+from hertz_common import load_script  # noqa: E402  (examples/hertz_common.py)
 
-def _hertz_mesher():
-    """examples/hertz_3d/make_mesh.py under a name of its own (this file is make_mesh.py too)."""
-    name = "hertz_3d_make_mesh"
-    if name not in sys.modules:
-        spec = importlib.util.spec_from_file_location(name, HERTZ_3D / "make_mesh.py")
-        module = importlib.util.module_from_spec(spec)
-        assert spec.loader is not None
-        sys.modules[name] = module
-        spec.loader.exec_module(module)
-    return sys.modules[name]
-
-
-hertz_mesh = _hertz_mesher()
+hertz_mesh = load_script("hertz_3d_make_mesh", HERTZ_3D / "make_mesh.py")
 RADIUS = hertz_mesh.RADIUS
 FINE_LENGTH = hertz_mesh.FINE_LENGTH
 

@@ -40,7 +40,6 @@ Writes ``cattaneo_mindlin_3d_traction.png``, ``cattaneo_mindlin_3d_summary.txt``
 from __future__ import annotations
 
 import argparse
-import importlib.util
 import json
 import math
 import sys
@@ -60,24 +59,13 @@ sys.path.insert(0, str(HERE.parent))
 from hertz_common import (  # noqa: E402  (examples/hertz_common.py)
     effective_modulus,
     example_inputs,
+    friction_coefficient,
+    load_script,
     second_moment_width,
     working_directory,
 )
 
-
-def _mesher():
-    """make_mesh.py of this folder under a name of its own (the Hertz examples have one too)."""
-    name = "cattaneo_mindlin_3d_make_mesh"
-    if name not in sys.modules:
-        spec = importlib.util.spec_from_file_location(name, HERE / "make_mesh.py")
-        module = importlib.util.module_from_spec(spec)
-        assert spec.loader is not None
-        sys.modules[name] = module
-        spec.loader.exec_module(module)
-    return sys.modules[name]
-
-
-make_mesh = _mesher()
+make_mesh = load_script("cattaneo_mindlin_3d_make_mesh", HERE / "make_mesh.py")
 
 MESH = "cattaneo_mindlin_3d.msh"
 PLOT = "cattaneo_mindlin_3d_traction.png"
@@ -128,19 +116,6 @@ def load_values(ratio: float, mu: float, area: float, moment: float) -> list[str
         0.0,
         f"-{PRESSURE:.15g}*min(t, 1.0) + {couple:.15g}*x/abs(x)*{RAMP}",
     ]
-
-
-def contact_parameters(parameters: dict) -> dict:
-    """The Parameters block of the ALM contact process of a ProjectParameters tree."""
-    for process in parameters["processes"]["contact_process_list"]:
-        if process["python_module"] == "alm_contact_process":
-            return process["Parameters"]
-    raise ValueError("no alm_contact_process in processes.contact_process_list")
-
-
-def friction_coefficient(parameters: dict) -> float:
-    """Mu of the pair "0" of the contact process."""
-    return float(contact_parameters(parameters)["friction_coefficients"]["0"])
 
 
 def _angle(a: np.ndarray, b: np.ndarray) -> float:
