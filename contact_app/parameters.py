@@ -14,11 +14,15 @@ from __future__ import annotations
 import copy
 import difflib
 import json
+import math
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
+from . import json_input
 from ._core import InputError
+from .json_input import quote
+from .setting_ranges import range_of
 
 _JsonValue = Any
 
@@ -76,14 +80,7 @@ class Parameters:
         _slot: tuple[dict[str, Any] | list[Any], str | int] | None = None,
     ):
         if isinstance(value, str) and path == ():
-            try:
-                value = json.loads(value)
-            except json.JSONDecodeError as error:
-                raise InputError(
-                    f"malformed JSON in {source}: {error.msg}\n"
-                    f"  where:    line {error.lineno}, column {error.colno}\n"
-                    "  fix:      check for a missing comma, quote or bracket there"
-                ) from None
+            value = json_input.loads(value, source)
         self._value = value
         self._source = source
         self._path = path
@@ -93,16 +90,8 @@ class Parameters:
 
     @classmethod
     def from_file(cls, filename: str | Path) -> Parameters:
-        """Read a JSON file. Raises InputError for a missing file or malformed JSON."""
-        path = Path(filename)
-        try:
-            text = path.read_text(encoding="utf-8")
-        except OSError as error:
-            raise InputError(
-                f'cannot read the settings file "{filename}": {error.strerror}\n'
-                "  fix:      check the path (relative paths start from the working directory)"
-            ) from None
-        return cls(text, source=path.name)
+        """Read a JSON file (checks of :mod:`contact_app.json_input`); InputError otherwise."""
+        return cls(json_input.load_file(filename, "settings file"), source=Path(filename).name)
 
     def Clone(self) -> Parameters:
         """Return a deep copy."""
@@ -113,7 +102,7 @@ class Parameters:
     def Where(self, key: str | None = None) -> str:
         """Describe the location of this node (or of its child ``key``) for messages."""
         parts = [self._source, *self._path] + ([key] if key is not None else [])
-        return " › ".join(parts)
+        return " › ".join(quote(part, 80) for part in parts)
 
     def _error(self, what: str, expected: str, fix: str = "", key: str | None = None) -> InputError:
         text = f"{what}\n  where:    {self.Where(key)}\n  expected: {expected}"
@@ -244,9 +233,16 @@ class Parameters:
     def _typed(self, ok: bool, expected: str) -> _JsonValue:
         if not ok:
             raise self._error(
-                f"wrong type: found a {_kind(self._value)} ({self._value!r})", expected
+                f"wrong type: found a {_kind(self._value)} ({quote(repr(self._value))})", expected
             )
         return self._value
+
+    def _finite(self, values: list[float]) -> list[float]:
+        """Refuse NaN and infinities (JSON text cannot hold them; a dict built in Python can)."""
+        for value in values:
+            if not math.isfinite(value):
+                raise self._error(f"the number {value} is not finite", "a finite number")
+        return values
 
     def GetString(self) -> str:
         """Return the string; InputError otherwise."""
@@ -262,16 +258,16 @@ class Parameters:
 
     def GetDouble(self) -> float:
         """Return the number as a float; InputError otherwise."""
-        return float(self._typed(self.IsNumber(), "a number"))
+        return self._finite([float(self._typed(self.IsNumber(), "a number"))])[0]
 
     def GetVector(self) -> list[float]:
         """Return an array of numbers as floats; InputError otherwise."""
-        return [float(v) for v in self._typed(self.IsVector(), "an array of numbers")]
+        return self._finite([float(v) for v in self._typed(self.IsVector(), "an array of numbers")])
 
     def GetMatrix(self) -> list[list[float]]:
         """Return an array of arrays of numbers; InputError otherwise."""
         rows = self._typed(self.IsMatrix(), "an array of arrays of numbers")
-        return [[float(v) for v in row] for row in rows]
+        return [self._finite([float(v) for v in row]) for row in rows]
 
     def GetStringArray(self) -> list[str]:
         """Return an array of strings; InputError otherwise."""
@@ -314,7 +310,9 @@ class Parameters:
         """Check this object's keys and value kinds against ``defaults``; add the missing ones.
 
         Only this level is checked (sub-objects are copied when missing but not validated), as in
-        Kratos. Raises InputError for an unknown key (with a suggestion) or a wrong value kind.
+        Kratos. Every number given must be finite and lie in the range of its key
+        (:mod:`contact_app.setting_ranges`). Raises InputError for an unknown key (with a
+        suggestion), a wrong value kind or a number out of range.
         """
         reference = defaults._value if isinstance(defaults, Parameters) else defaults
         values = self._object()
@@ -325,17 +323,37 @@ class Parameters:
                     ", ..." if len(known) > 12 else ""
                 )
                 raise self._error(
-                    f'unknown key "{key}"', f"one of {listing}", suggest(key, known), key
+                    f'unknown key "{quote(key, 80)}"',
+                    f"one of {listing}",
+                    suggest(key, known),
+                    key,
                 )
             if not _compatible(value, reference[key]):
                 raise self._error(
-                    f'"{key}" has the wrong type: found a {_kind(value)} ({value!r})',
+                    f'"{key}" has the wrong type: found a {_kind(value)} ({quote(repr(value))})',
                     f"a {_kind(reference[key])} like the default {json.dumps(reference[key])}",
                     key=key,
                 )
+            self._CheckNumber(key, value)
         for key, value in reference.items():
             if key not in values:
                 values[key] = copy.deepcopy(value)
+
+    def _CheckNumber(self, key: str, value: _JsonValue) -> None:
+        """Refuse a non-finite number, or one outside the range its key allows."""
+        if isinstance(value, bool) or not isinstance(value, int | float):
+            return
+        if not math.isfinite(value):
+            raise self._error(f'"{key}" is {value}', "a finite number", key=key)
+        allowed = range_of(key, self._path[-1] if self._path else None)
+        if allowed is not None and not allowed.contains(value):
+            meaning = f" ({allowed.meaning})" if allowed.meaning else ""
+            raise self._error(
+                f'"{key}" is {value}, out of range',
+                allowed.text() + meaning,
+                "correct the value",
+                key=key,
+            )
 
     def RecursivelyValidateAndAssignDefaults(
         self, defaults: Parameters | dict[str, _JsonValue]

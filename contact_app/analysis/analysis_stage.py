@@ -6,7 +6,8 @@ Order of the calls (``kratos_python_layer.md`` §1.4):
   ``ModifyInitialProperties`` → ``ModifyInitialGeometry`` → processes created → every process
   ``ExecuteInitialize`` → ``solver.Initialize`` → ``Check`` → ``ModifyAfterSolverInitialize`` →
   every process ``ExecuteBeforeSolutionLoop`` → TIME = start_time.
-* ``RunSolutionLoop``: while ``time < end_time`` (strict): ``AdvanceInTime`` →
+* ``RunSolutionLoop``: while ``time < end_time`` (up to round-off of the step,
+  :func:`contact_app.analysis.time_loop.keep_advancing`): ``AdvanceInTime`` →
   ``InitializeSolutionStep`` (processes ``ExecuteInitializeSolutionStep``,
   ``ChangeMaterialProperties``, ``solver.InitializeSolutionStep``) → ``Predict`` →
   ``SolveSolutionStep`` → ``FinalizeSolutionStep`` (solver, then processes) →
@@ -30,6 +31,7 @@ import contact_app as ca
 
 from ..parameters import Parameters
 from .reporting import Reporter, StepRecord
+from .time_loop import keep_advancing
 
 logger = logging.getLogger("contact_app.analysis")
 
@@ -66,6 +68,7 @@ class AnalysisStage:
         self.start_time = problem_data["start_time"].GetDouble()
         self.end_time = problem_data["end_time"].GetDouble()
         self.time = self.start_time
+        self._last_delta = 0.0  # the last step, for the end-of-loop tolerance
         self._solver: Any = None
         self._list_of_processes: list[Any] = []
         self._list_of_output_processes: list[Any] = []
@@ -115,7 +118,9 @@ class AnalysisStage:
         )
         while self.KeepAdvancingSolutionLoop():
             with self.reporter.phase("solve"):
+                previous = self.time
                 self.time = solver.AdvanceInTime(self.time)
+                self._last_delta = self.time - previous
                 builder = solver.GetBuilderAndSolver()
                 builder.ResetTimings()
                 self.InitializeSolutionStep()
@@ -192,8 +197,8 @@ class AnalysisStage:
     # -- per step --
 
     def KeepAdvancingSolutionLoop(self) -> bool:
-        """True while ``time < end_time`` (strict, as in Kratos)."""
-        return self.time < self.end_time
+        """True while ``time < end_time`` beyond round-off of the last step (no extra step)."""
+        return keep_advancing(self.time, self.end_time, self._last_delta)
 
     def InitializeSolutionStep(self) -> None:
         """Apply the processes' step values, then initialize the solver step."""

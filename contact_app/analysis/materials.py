@@ -17,6 +17,12 @@ follows the registered variable (number, integer, bool, 3-vector, vector, matrix
 properties are set on every element **and** condition of the model part. The whole file is
 validated by :class:`MaterialsReader` before the mesh is read; model part names are resolved when
 :meth:`MaterialsReader.Apply` runs.
+
+Every number must be finite and at most :data:`MAX_MAGNITUDE` in size, and the properties that a
+law, element, load or contact process reads must lie in their physical range
+(:data:`PROPERTY_RANGES`): a negative THICKNESS flips the sign of the response, a negative
+FRICTION_COEFFICIENT turns friction off. :func:`CheckMeshProperties` applies the same table to the
+properties the mesh file defined.
 """
 
 from __future__ import annotations
@@ -31,9 +37,32 @@ import contact_app as ca
 
 from ..model_part_lookup import get_model_part
 from ..parameters import Parameters, suggest
+from ..setting_ranges import Range
 from .validation import error, not_supported
 
 logger = logging.getLogger("contact_app.analysis")
+
+#: Largest magnitude of a material number: products of two such values (stiffness times
+#: displacement, E·t·area) stay far inside the double range, and the pivots of the linear solver
+#: are not lost in round-off (E = 1e300 ends as a singular factorisation).
+MAX_MAGNITUDE = 1.0e30
+
+#: Physical ranges of the properties read by laws, elements, loads and contact (bare names).
+PROPERTY_RANGES: dict[str, Range] = {
+    "YOUNG_MODULUS": Range(0.0, low_open=True, meaning="Young's modulus"),
+    "POISSON_RATIO": Range(-1.0, 0.5, True, True, "Poisson's ratio"),
+    "DENSITY": Range(0.0, meaning="a mass density"),
+    "THICKNESS": Range(0.0, low_open=True, meaning="the thickness of plane or axisymmetric parts"),
+    "FRICTION_COEFFICIENT": Range(0.0, meaning="a Coulomb friction coefficient μ"),
+    "MASS_FACTOR": Range(0.0, meaning="a factor on the mass matrix"),
+    "INTEGRATION_ORDER": Range(1.0, 5.0, meaning="a Gauss rule order"),
+    "RAYLEIGH_ALPHA": Range(0.0, meaning="a damping coefficient"),
+    "RAYLEIGH_BETA": Range(0.0, meaning="a damping coefficient"),
+    "INITIAL_PENALTY": Range(0.0, meaning="a contact penalty"),
+    "PENALTY_PARAMETER": Range(0.0, meaning="a contact penalty"),
+    "SCALE_FACTOR": Range(0.0, low_open=True, meaning="a multiplier scale factor"),
+    "TANGENT_FACTOR": Range(0.0, low_open=True, meaning="the stick penalty factor"),
+}
 
 _BLOCK_KEYS = {"model_part_name": "", "properties_id": 0, "Material": {}, "sub_properties": []}
 _MATERIAL_KEYS = {"name": "", "constitutive_law": {}, "Variables": {}, "Tables": {}}
@@ -78,7 +107,42 @@ def _variable(settings: Parameters, key: str | None, name: str) -> Any:
     return ca.get_variable(bare)
 
 
+def property_problem(name: str, values: Any) -> str | None:
+    """Say what is wrong with the value(s) of the property ``name``, or None if they are valid."""
+    numbers = np.asarray(values, dtype=float).ravel()
+    if not np.all(np.isfinite(numbers)):
+        return f"{name} is not finite; expected: a finite number"
+    if numbers.size and np.max(np.abs(numbers)) > MAX_MAGNITUDE:
+        return (
+            f"{name} = {np.max(np.abs(numbers)):g} is beyond any physical value; expected: a "
+            f"magnitude ≤ {MAX_MAGNITUDE:g} (check the units)"
+        )
+    allowed = PROPERTY_RANGES.get(name)
+    if allowed is not None:
+        bad = [v for v in numbers if not allowed.contains(float(v))]
+        if bad:
+            expected = f"{allowed.text()} ({allowed.meaning})"
+            return f"{name} = {bad[0]:g} is out of range; expected: {expected}"
+    return None
+
+
+def _checked(settings: Parameters, key: str, variable: Any, value: Any) -> Any:
+    """Return ``value`` after checking it against the range of its variable (located error)."""
+    if isinstance(value, bool | str):
+        return value
+    problem = property_problem(variable.Name(), value)
+    if problem is not None:
+        what, _, expected = problem.partition("; expected: ")
+        raise error(settings, key, what, expected, "correct the value in the materials file")
+    return value
+
+
 def _value(settings: Parameters, key: str, variable: Any) -> Any:
+    """Convert the JSON value ``settings[key]`` to the kind of ``variable`` and check its range."""
+    return _checked(settings, key, variable, _converted(settings, key, variable))
+
+
+def _converted(settings: Parameters, key: str, variable: Any) -> Any:
     """Convert the JSON value ``settings[key]`` to the kind of ``variable``."""
     node = settings[key]
     if isinstance(variable, ca.BoolVariable):
@@ -149,11 +213,7 @@ class MaterialsReader:
             raise not_supported(
                 block, "sub_properties", "sub_properties", "give each property its own block"
             )
-        properties_id = block["properties_id"].GetInt()
-        if properties_id < 0:
-            raise error(
-                block, "properties_id", f"properties_id is {properties_id}", "an integer ≥ 0"
-            )
+        properties_id = block["properties_id"].GetInt()  # range: setting_ranges.py
         result = _Block(block, block["model_part_name"].GetString(), properties_id, None)
         material = block["Material"]
         material.ValidateAndAssignDefaults(_MATERIAL_KEYS)
@@ -204,6 +264,8 @@ class MaterialsReader:
             raise error(
                 table, "data", "table data must be rows of two numbers", "[[x0, y0], [x1, y1], ...]"
             )
+        _checked(table, "data", variables[0], [row[0] for row in rows])
+        _checked(table, "data", variables[1], [row[1] for row in rows])
         return _Table(variables[0], variables[1], rows)
 
     def Apply(self, model: ca.Model) -> None:
@@ -270,6 +332,29 @@ class MaterialsReader:
                 part.FullName(),
                 properties.Id,
             )
+
+
+def CheckMeshProperties(model_part: ca.ModelPart, mesh: str) -> None:
+    """Check the properties of ``model_part`` (those of the mesh file) against the same ranges.
+
+    Raises:
+        InputError: a property out of range, naming the properties id and the mesh file.
+
+    """
+    for properties in model_part.GetRootModelPart().Properties:
+        for name in PROPERTY_RANGES:
+            variable = ca.get_variable(name) if name in ca.registered_variables() else None
+            if variable is None or not properties.Has(variable):
+                continue
+            problem = property_problem(name, properties.GetValue(variable))
+            if problem is not None:
+                what, _, expected = problem.partition("; expected: ")
+                raise ca.InputError(
+                    f"{what}\n  where:    properties {properties.Id} of the mesh {mesh}\n"
+                    f"  expected: {expected}\n"
+                    "  fix:      correct it in the Begin Properties block of the mesh, or set it "
+                    "in the materials file"
+                )
 
 
 def ReadMaterials(model: ca.Model, filename: str) -> MaterialsReader:

@@ -215,12 +215,7 @@ class ContactSolverMixin:
         convert_old_frictional_keys(contact)
         contact.RecursivelyValidateAndAssignDefaults(CONTACT_SETTINGS_DEFAULTS)
         self.mortar_type = check_mortar_type(contact)
-        if contact["split_factor"].GetDouble() <= 1.0:
-            raise error(contact, "split_factor", "split_factor ≤ 1", "a factor > 1")
-        if contact["max_number_splits"].GetInt() < 1:
-            raise error(contact, "max_number_splits", "max_number_splits < 1", "≥ 1")
-        if contact["inner_loop_iterations"].GetInt() < 1:
-            raise error(contact, "inner_loop_iterations", "inner_loop_iterations < 1", "≥ 1")
+        # split_factor, max_number_splits, ... were range-checked by the defaults validation.
         # Pairs appear and disappear between steps: the DoF set is rebuilt every step.
         self.settings["reform_dofs_at_each_step"].SetBool(True)
         self.settings["clear_storage"].SetBool(True)

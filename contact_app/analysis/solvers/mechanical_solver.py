@@ -11,13 +11,15 @@ way.
 from __future__ import annotations
 
 import logging
+from pathlib import Path
 from typing import Any
 
 import contact_app as ca
 
 from ...parameters import Parameters, suggest
-from ..materials import MaterialsReader
+from ..materials import CheckMeshProperties, MaterialsReader
 from ..paths import PathResolver
+from ..time_loop import count_steps
 from ..validation import choice, error, not_supported, positive
 from .convergence_criteria_factory import (
     ConvergenceCriterion,
@@ -140,6 +142,7 @@ class MechanicalSolver:
         self._meshio_path = ""
         self._meshio_mapping: dict[str, Any] = {}
         self._meshio_where = ""
+        self._time_step_table: Any = None
 
         self._ConvertDeprecatedSettings()
         had_domain_size = self.settings.Has("domain_size")
@@ -268,19 +271,8 @@ class MechanicalSolver:
         domain_size = settings["domain_size"].GetInt()
         if domain_size not in (2, 3):
             raise error(settings, "domain_size", f"domain_size is {domain_size}", "2 or 3")
-        for key in ("echo_level",):
-            if settings[key].GetInt() < 0:
-                raise error(settings, key, f"{key} is negative", "an integer ≥ 0")
-        for key in ("buffer_size", "max_iteration"):
-            if settings[key].GetInt() < 1:
-                raise error(settings, key, f"{key} is {settings[key].GetInt()}", "an integer ≥ 1")
-        for key in (
-            "displacement_relative_tolerance",
-            "displacement_absolute_tolerance",
-            "residual_relative_tolerance",
-            "residual_absolute_tolerance",
-        ):
-            positive(settings, key, allow_zero=True)
+        # Numbers (echo_level, buffer_size, max_iteration, tolerances) were range-checked by
+        # ValidateAndAssignDefaults (contact_app/setting_ranges.py).
         for key, feature in _FEATURE_FLAGS.items():
             if settings[key].GetBool():
                 raise not_supported(settings, key, feature, f'set "{key}": false or remove it')
@@ -349,8 +341,6 @@ class MechanicalSolver:
                 raise ca.InputError(
                     f"{first}\n  where:    {linear.Where('solver_type')}\n{rest}"
                 ) from None
-        if linear.Has("max_iteration") and linear["max_iteration"].GetInt() < 1:
-            raise error(linear, "max_iteration", "max_iteration is below 1", "an integer ≥ 1")
         if linear.Has("tolerance"):
             positive(linear, "tolerance")
 
@@ -368,7 +358,7 @@ class MechanicalSolver:
                 "give one constant time_step, or a table [[time, dt], ...]",
             )
         if stepping.Has("time_step"):
-            positive(stepping, "time_step")
+            pass  # its range is checked with the defaults (contact_app/setting_ranges.py)
         elif stepping.Has("time_step_table"):
             rows = stepping["time_step_table"].GetMatrix()
             if not rows or any(len(row) != 2 for row in rows):
@@ -403,7 +393,6 @@ class MechanicalSolver:
                 )
             for interval in intervals.values():
                 interval.ValidateAndAssignDefaults({"interval": [0.0, "End"], "time_step": 1.0})
-                positive(interval, "time_step")
                 self._IntervalBounds(interval)
             logger.warning(
                 "%s is deprecated; use time_step or time_step_table",
@@ -593,7 +582,12 @@ class MechanicalSolver:
                 node.AddDof(variable)
 
     def ImportModelPart(self) -> None:
-        """Read the mdpa file (``input_type`` "mdpa"); nothing for "use_input_model_part"."""
+        """Read the mdpa file (``input_type`` "mdpa"); nothing for "use_input_model_part".
+
+        Raises:
+            InputError: the mesh file defines no node (empty or unreadable), named as such rather
+                than later as a model part missing from the materials file.
+        """
         if self._mdpa_path:
             ca.ModelPartIO(self._mdpa_path).ReadModelPart(self.main_model_part)
         elif self._meshio_path:
@@ -602,6 +596,15 @@ class MechanicalSolver:
             ImportMeshioModelPart(
                 self.main_model_part, self._meshio_path, self._meshio_mapping, self._meshio_where
             )
+        mesh = self._mdpa_path or self._meshio_path
+        if mesh and self.main_model_part.NumberOfNodes() == 0:
+            raise error(
+                self.settings["model_import_settings"],
+                "input_filename",
+                f'the mesh file "{mesh}" defines no nodes: it is empty or unreadable',
+                "a mesh with a Begin Nodes block (or the cells and points of a meshio file)",
+                "check that the file is the intended mesh and was written completely",
+            )
 
     def PrepareModelPart(self) -> None:
         """Assign the materials, set and fill the history buffer, check the computing part."""
@@ -609,6 +612,9 @@ class MechanicalSolver:
             self._materials.Apply(self.model)
         elif self.main_model_part.NumberOfElements():
             logger.info("no materials_filename: the properties of the mdpa are used as they are")
+        mesh = self._mdpa_path or self._meshio_path
+        if mesh:
+            CheckMeshProperties(self.main_model_part, Path(mesh).name)
         self._SetAndFillBuffer()
         self.GetComputingModelPart()
 
@@ -733,15 +739,30 @@ class MechanicalSolver:
 
     def ComputeDeltaTime(self) -> float:
         """Δt of the next step: time_step, time_step_table at TIME, or time_step_intervals."""
+        return self.DeltaTimeAt(self.main_model_part.ProcessInfo[ca.TIME])
+
+    def CountSteps(self, start_time: float, end_time: float) -> int:
+        """Number of steps from start_time to end_time (InputError for a meaningless loop)."""
         stepping = self.settings["time_stepping"]
-        time = self.main_model_part.ProcessInfo[ca.TIME]
+        return count_steps(
+            start_time,
+            end_time,
+            self.DeltaTimeAt,
+            stepping.Where(),
+            constant=stepping.Has("time_step"),
+        )
+
+    def DeltaTimeAt(self, time: float) -> float:
+        """Δt of a step that starts at ``time`` (time_step, time_step_table or the intervals)."""
+        stepping = self.settings["time_stepping"]
         if stepping.Has("time_step"):
             return stepping["time_step"].GetDouble()
         if stepping.Has("time_step_table"):
-            table = ca.Table()
-            for t, dt in stepping["time_step_table"].GetMatrix():
-                table.AddRow(t, dt)
-            delta = table.GetValue(time)
+            if self._time_step_table is None:
+                self._time_step_table = ca.Table()
+                for t, dt in stepping["time_step_table"].GetMatrix():
+                    self._time_step_table.AddRow(t, dt)
+            delta = self._time_step_table.GetValue(time)
             if delta <= 0.0:
                 raise error(
                     stepping,

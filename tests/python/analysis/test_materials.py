@@ -190,7 +190,11 @@ def test_two_blocks_on_the_same_entities_warn(
             ca.InputError,
             'missing required key "model_part_name"',
         ),
-        ({"model_part_name": "Parts_a", "properties_id": -1}, ca.InputError, "properties_id is -1"),
+        (
+            {"model_part_name": "Parts_a", "properties_id": -1},
+            ca.InputError,
+            '"properties_id" is -1',
+        ),
         (
             {
                 "model_part_name": "Parts_a",

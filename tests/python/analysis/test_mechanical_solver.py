@@ -112,7 +112,7 @@ def test_builder_settings_without_type_use_the_legacy_flags() -> None:
     ("changes", "error", "message"),
     [
         ({"max_iterations": 3}, ca.InputError, 'did you mean "max_iteration"'),
-        ({"max_iteration": 0}, ca.InputError, "max_iteration is 0"),
+        ({"max_iteration": 0}, ca.InputError, '"max_iteration" is 0'),
         ({"max_iteration": 2.5}, ca.InputError, '"max_iteration" has the wrong type'),
         ({"domain_size": 1}, ca.InputError, "domain_size is 1"),
         ({"model_part_name": ""}, ca.InputError, "model_part_name is empty"),
