@@ -17,12 +17,15 @@ from collections import Counter
 from collections.abc import Callable, Sequence
 
 import contact_app as ca
+from contact_app.json_input import quote
 
 EXIT_OK = 0
 EXIT_NOT_CONVERGED = 1
 EXIT_INPUT_ERROR = 2
 EXIT_INTERNAL_ERROR = 3
 EXIT_INTERRUPTED = 130
+#: Longest line of an error message printed (the quotes inside are shorter still).
+MAX_LINE = 500
 
 #: Historical variables the structural solver declares on the root model part "Structure".
 INFO_HISTORICAL_VARIABLES = (
@@ -110,6 +113,7 @@ def _run(args: argparse.Namespace) -> int:
             args.parameters,
             stop_on_non_convergence=args.stop_on_non_convergence,
             quiet=args.quiet,
+            safe=args.safe,
         )
     finally:
         logging.getLogger("contact_app").removeHandler(handler)
@@ -123,6 +127,11 @@ def _result_check_error() -> type[BaseException]:
     except ImportError:
         return AssertionError
     return ResultCheckError
+
+
+def _shown(error: BaseException) -> str:
+    """The message of an error, each line escaped and capped (NULs, 20,000-character lines)."""
+    return "\n".join(quote(line, MAX_LINE) for line in str(error).split("\n"))
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -158,6 +167,13 @@ def build_parser() -> argparse.ArgumentParser:
         "go on, as Kratos does); the outputs end at the last converged step",
     )
     run.add_argument("--quiet", action="store_true", help="no per-step table and summary")
+    run.add_argument(
+        "--safe",
+        action="store_true",
+        help="run only contact_app's own processes: refuse any python_module that would import "
+        "code from the case folder, the working directory or sys.path (for cases you did not "
+        "write)",
+    )
     run.set_defaults(handler=_run)
     return parser
 
@@ -191,19 +207,19 @@ def main(argv: Sequence[str] | None = None) -> int:
     except _result_check_error() as error:
         if args.debug:
             raise
-        print(f"result check failed: {error}", file=sys.stderr)
+        print(f"result check failed: {_shown(error)}", file=sys.stderr)
         return EXIT_NOT_CONVERGED
     except tuple(error for error, _ in errors) as error:
         if args.debug:
             raise
-        print(f"error: {error}", file=sys.stderr)
+        print(f"error: {_shown(error)}", file=sys.stderr)
         return next(code for kind, code in errors if isinstance(error, kind))
     except Exception as error:  # a bug: say so in one paragraph unless --debug
         if args.debug:
             raise
         print(
             f"internal error (a bug in contact_app; please report it): {type(error).__name__}: "
-            f"{error}\n  fix:      rerun with --debug for the traceback",
+            f"{_shown(error)}\n  fix:      rerun with --debug for the traceback",
             file=sys.stderr,
         )
         return EXIT_INTERNAL_ERROR

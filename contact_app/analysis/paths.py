@@ -16,6 +16,18 @@ from __future__ import annotations
 from pathlib import Path
 
 from .._core import InputError
+from ..json_input import quote
+
+
+def _regular(path: str, where: str, what: str) -> str:
+    if not Path(path).is_file():
+        kind = "a folder" if Path(path).is_dir() else "not a regular file"
+        raise InputError(
+            f'{what} "{quote(path)}" is {kind}\n  where:    {where}\n'
+            "  expected: a file on disk (not a folder, device, FIFO or socket)\n"
+            "  fix:      name the file itself"
+        )
+    return path
 
 
 class PathResolver:
@@ -46,19 +58,20 @@ class PathResolver:
             exists), else the path inside the settings file's folder.
 
         Raises:
-            InputError: the file exists in neither place.
+            InputError: the file exists in neither place, or is not a regular file (a folder,
+                a device such as /dev/zero or a FIFO would be read forever or as nothing).
 
         """
         path = Path(value)
         if path.exists():
-            return value
+            return _regular(value, where, what)
         looked = [str(path.resolve())]
         if self._fallback_applies(path):
             folders = [self.base_dir, *self.base_dir.parents]  # type: ignore[union-attr]
             for folder in folders:
                 candidate = folder / path
                 if candidate.exists():
-                    return str(candidate)
+                    return _regular(str(candidate), where, what)
             looked.append(str(self.base_dir / path) + " (and the same below its parent folders)")
         raise InputError(
             f'{what} "{value}" not found\n  where:    {where}\n'

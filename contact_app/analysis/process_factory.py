@@ -10,7 +10,10 @@ modules map to contact_app packages:
 
 Without ``kratos_module`` the module is looked up in ``contact_app.processes`` first, then
 imported as a plain module (a user's own process next to the parameters file; Kratos imports it
-the same way). The module's ``Factory(descriptor, model)`` creates the process. A newer-style
+the same way): that runs the case folder's code, so a case from an untrusted source is run with
+``safe`` (``contact-app run --safe``), which refuses every module outside contact_app's own
+packages. A module name must be an absolute dotted name (``..evil`` is refused). The module's
+``Factory(descriptor, model)`` creates the process. A newer-style
 ``"name": "Processes.KratosMultiphysics.AssignVectorVariableProcess"`` selects the module of that
 class. ``gid_output_process`` blocks are skipped with a warning (GiD output is not available).
 """
@@ -29,6 +32,7 @@ from typing import Any
 
 import contact_app as ca
 
+from ..json_input import quote
 from ..parameters import Parameters, suggest
 from .paths import PathResolver
 from .validation import error
@@ -57,6 +61,7 @@ SKIPPED_MODULES = {
 #: Keys of process ``Parameters`` that name files to read or write (resolved like the solver's).
 INPUT_PATH_KEYS = ("input_file_name",)
 OUTPUT_PATH_KEYS = ("output_file_name", "output_path", "folder_name")
+_MODULE_NAME = re.compile(r"[A-Za-z_]\w*(\.[A-Za-z_]\w*)*")
 
 
 def _snake_case(name: str) -> str:
@@ -88,12 +93,15 @@ class KratosProcessFactory:
     Args:
         model: the model the processes act on.
         paths: how relative file names in process settings resolve.
+        safe: import only contact_app's own process modules, never one from the case folder,
+            the working directory or ``sys.path``.
 
     """
 
-    def __init__(self, model: ca.Model, paths: PathResolver | None = None):
+    def __init__(self, model: ca.Model, paths: PathResolver | None = None, *, safe: bool = False):
         self.model = model
         self.paths = paths or PathResolver()
+        self.safe = safe
 
     # -- resolution --
 
@@ -144,13 +152,22 @@ class KratosProcessFactory:
                     suggest(key, list(DESCRIPTOR_KEYS)),
                 )
         python_module, kratos_module = self._module_names(item)
+        key = "python_module" if item.Has("python_module") else "name"
+        if not _MODULE_NAME.fullmatch(python_module):
+            raise error(
+                item,
+                key,
+                f'"{quote(python_module)}" is not a module name',
+                'an absolute module name such as "assign_vector_variable_process" or '
+                '"my_package.my_process" (letters, digits, "_", separated by single dots)',
+                "relative names (a leading dot) and paths cannot be imported; write the name",
+            )
         if python_module in SKIPPED_MODULES:
             logger.warning("%s skipped: %s", item.Where(), SKIPPED_MODULES[python_module])
             return None
-        key = "python_module" if item.Has("python_module") else "name"
         if kratos_module is None:
             module = _import(f"{CORE_PACKAGE}.{python_module}") or self._ImportUserModule(
-                python_module
+                item, key, python_module
             )
             if module is None:
                 raise self._UnknownModule(item, key, python_module, CORE_PACKAGE)
@@ -181,7 +198,21 @@ class KratosProcessFactory:
             raise self._UnknownModule(item, key, python_module, package)
         return self._CheckFactory(item, module)
 
-    def _ImportUserModule(self, python_module: str) -> ModuleType | None:
+    def _ImportUserModule(
+        self, item: Parameters, key: str, python_module: str
+    ) -> ModuleType | None:
+        if self.safe:
+            known = _package_modules(CORE_PACKAGE)
+            hint = suggest(python_module, known)
+            raise ca.InputError(
+                f'"{python_module}" is not one of contact_app\'s processes, and --safe refuses to '
+                "import a module from the case folder, the working directory or sys.path\n"
+                f"  where:    {item.Where(key)}\n"
+                f"  expected: one of {', '.join(known)} (or a contact process with "
+                '"kratos_module": "KratosMultiphysics.ContactStructuralMechanicsApplication")\n'
+                "  fix:      run without --safe only if you trust the code of this case folder"
+                + (f" ({hint})" if hint else "")
+            )
         folders = [os.getcwd()] + ([str(self.paths.base_dir)] if self.paths.base_dir else [])
         added = [f for f in folders if f not in sys.path]
         sys.path[:0] = added

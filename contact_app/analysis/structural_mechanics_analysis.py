@@ -30,6 +30,7 @@ import contact_app as ca
 
 from ..parameters import Parameters, suggest
 from .analysis_stage import AnalysisStage
+from .outputs import CheckOutputs
 from .paths import PathResolver
 from .process_factory import KratosProcessFactory
 from .reporting import Reporter
@@ -242,6 +243,8 @@ class StructuralMechanicsAnalysis(AnalysisStage):
             directory are looked up there (None = working directory only).
         stop_on_non_convergence: raise ``ConvergenceError`` at the first unconverged step.
         reporter: console report (default: table and summary on stdout).
+        safe: create only contact_app's own processes (no module from the case folder).
+        parameters_file: the parameters file itself, which no output may overwrite.
 
     Raises:
         InputError: invalid parameters (the message says what, where and how to fix it).
@@ -257,6 +260,8 @@ class StructuralMechanicsAnalysis(AnalysisStage):
         base_dir: str | Path | None = None,
         stop_on_non_convergence: bool = False,
         reporter: Reporter | None = None,
+        safe: bool = False,
+        parameters_file: str | Path | None = None,
     ):
         if not isinstance(model, ca.Model):
             raise TypeError(f"model must be a contact_app.Model, got {type(model).__name__}")
@@ -270,10 +275,14 @@ class StructuralMechanicsAnalysis(AnalysisStage):
             parameters["solver_settings"].Has(k)
             for k in ("contact_settings", "mpc_contact_settings")
         )
-        self._factory = KratosProcessFactory(model, self.paths)
+        self._factory = KratosProcessFactory(model, self.paths, safe=safe)
         self._GetSolver().AddVariables()
         self._expected_steps = self._GetSolver().CountSteps(self.start_time, self.end_time)
         self._CheckProcessModules()
+        inputs = self._GetSolver().InputFiles()
+        if parameters_file is not None:
+            inputs.append((str(parameters_file), "the parameters file"))
+        CheckOutputs(parameters, ("processes", "output_processes"), self.paths, inputs)
 
     def _CreateSolver(self) -> Any:
         return CreateSolver(self.model, self.project_parameters, self.paths)
@@ -346,6 +355,7 @@ def run(
     stop_on_non_convergence: bool = False,
     quiet: bool = False,
     model: ca.Model | None = None,
+    safe: bool = False,
 ) -> StructuralMechanicsAnalysis:
     """Run an analysis from a ``ProjectParameters.json`` path or an in-memory tree.
 
@@ -357,6 +367,7 @@ def run(
         stop_on_non_convergence: stop with ``ConvergenceError`` at the first unconverged step.
         quiet: no console table or summary.
         model: the model to fill (default: a new one).
+        safe: run only contact_app's own processes (``contact-app run --safe``).
 
     Returns:
         The finished analysis (its ``model`` holds the results).
@@ -367,6 +378,7 @@ def run(
 
     """
     base_dir: Path | None = None
+    path: Path | None = None
     if isinstance(path_or_dict, str | Path):
         path = Path(path_or_dict)
         parameters = Parameters.from_file(path)
@@ -379,6 +391,8 @@ def run(
         base_dir=base_dir,
         stop_on_non_convergence=stop_on_non_convergence,
         reporter=Reporter(quiet=quiet),
+        safe=safe,
+        parameters_file=path,
     )
     analysis.Run()
     return analysis

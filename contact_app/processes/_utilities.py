@@ -7,6 +7,7 @@ tables, and ``local_axes``.
 from __future__ import annotations
 
 import csv
+import io
 import math
 from collections.abc import Iterable, Sequence
 from pathlib import Path
@@ -16,6 +17,7 @@ import numpy as np
 
 from .. import _core
 from .._core import InputError
+from ..json_input import decode, read_bytes
 from ..parameters import Parameters, suggest
 from .function_expression import FunctionExpression
 
@@ -185,26 +187,21 @@ class CsvTable:
         columns = (settings["first_column_id"].GetInt(), settings["second_column_id"].GetInt())
         na_replace = settings["na_replace"].GetDouble()
         where = settings.Where("filename")
-        try:
-            with open(filename, encoding="utf-8", newline="") as stream:
-                rows = list(csv.reader(stream, delimiter=settings["delimiter"].GetString()))
-        except OSError as error:
-            raise InputError(
-                f'cannot read the table "{filename}": {error.strerror}\n  where:    {where}\n'
-                f"  fix:      relative paths start from the working directory ({Path.cwd()})"
-            ) from None
+        text = decode(read_bytes(filename, "table", where), Path(filename).name)
+        rows = list(csv.reader(io.StringIO(text), delimiter=settings["delimiter"].GetString()))
         points: list[tuple[float, float]] = []
         for number, row in enumerate(rows[settings["skiprows"].GetInt() :], 1):
             if not row or all(not cell.strip() for cell in row):
                 continue
             try:
                 pair = [row[c].strip() for c in columns]
-                points.append(
-                    tuple(float(v) if v and v.lower() != "nan" else na_replace for v in pair)
-                )
+                point = tuple(float(v) if v and v.lower() != "nan" else na_replace for v in pair)
+                if not all(math.isfinite(v) for v in point):
+                    raise ValueError("not finite")
+                points.append(point)
             except (IndexError, ValueError):
                 raise InputError(
-                    f'row {number} of "{filename}" has no numbers in columns {columns}\n'
+                    f'row {number} of "{filename}" has no finite numbers in columns {columns}\n'
                     f"  where:    {where}\n  fix:      check delimiter, skiprows and column ids"
                 ) from None
         if not points:

@@ -22,13 +22,13 @@ seen.
 
 from __future__ import annotations
 
-import json
 import math
 from pathlib import Path
 from typing import Any
 
 from .. import _core
 from .._core import InputError, Model
+from ..json_input import load_file
 from ..model_part_lookup import get_model_part
 from ..parameters import Parameters
 from ._json_results import (
@@ -192,19 +192,7 @@ class FromJsonCheckResultProcess(Process):
     def _read(self) -> dict[str, Any]:
         path = Path(self.input_file_name)
         where = self.settings.Where("input_file_name")
-        try:
-            data = json.loads(path.read_text(encoding="utf-8"))
-        except OSError as error:
-            raise InputError(
-                f'cannot read the reference file "{path}": {error.strerror}\n'
-                f"  where:    {where}\n"
-                f"  fix:      relative paths start from the working directory ({Path.cwd()})"
-            ) from None
-        except json.JSONDecodeError as error:
-            raise InputError(
-                f'the reference file "{path}" is not valid JSON: {error.msg} '
-                f"(line {error.lineno})\n  where:    {where}"
-            ) from None
+        data = load_file(path, "reference file", where)
         times = data.get("TIME") if isinstance(data, dict) else None
         if not isinstance(times, list) or not times:
             raise InputError(

@@ -30,6 +30,7 @@ from typing import Any
 import numpy as np
 
 from .._core import InputError
+from ..json_input import quote
 from ..parameters import suggest
 
 #: Names of the variables a function string may use, in the order the compiled function takes them.
@@ -37,6 +38,9 @@ VARIABLES: tuple[str, ...] = ("t", "x", "y", "z", "X", "Y", "Z")
 SPACE_VARIABLES = frozenset({"x", "y", "z", "X", "Y", "Z"})
 CONSTANTS: dict[str, float] = {"pi": math.pi, "e": math.e}
 MAX_LENGTH = 4000
+#: Deepest nesting of the expression tree (a chain of 900 "+" is 900 levels deep; checking and
+#: compiling recurse over the tree, so the depth is bounded before they run).
+MAX_DEPTH = 100
 
 
 def _np_min(*args: Any) -> Any:
@@ -244,7 +248,7 @@ class FunctionExpression:
     def _error(self, what: str, fix: str = "") -> InputError:
         where = f"\n  where:    {self._where}" if self._where else ""
         text = (
-            f'the function string "{self._expression}" {what}{where}\n'
+            f'the function string "{quote(self._expression)}" {what}{where}\n'
             f"  expected: {_ALLOWED_SUMMARY}"
         )
         if fix:
@@ -257,7 +261,7 @@ class FunctionExpression:
         )
         where = f"\n  where:    {self._where}" if self._where else ""
         return InputError(
-            f'the function string "{self._expression}" has no finite value at {values}: '
+            f'the function string "{quote(self._expression)}" has no finite value at {values}: '
             f"{reason}{where}\n"
             "  fix:      change the expression so that it is defined on the whole model part"
         )
@@ -271,12 +275,23 @@ class FunctionExpression:
                 f"keep it below {MAX_LENGTH} characters",
             )
         try:
-            return ast.parse(self._expression.strip(), mode="eval").body
+            body = ast.parse(self._expression.strip(), mode="eval").body
         except SyntaxError as error:
             column = f" at column {error.offset}" if error.offset else ""
             raise self._error(f"is not a valid expression ({error.msg}{column})") from None
-        except (RecursionError, MemoryError, ValueError) as error:
+        except RecursionError:
+            raise self._too_deep() from None
+        except (MemoryError, ValueError) as error:
             raise self._error(f"cannot be parsed ({type(error).__name__})") from None
+        if _depth(body) > MAX_DEPTH:
+            raise self._too_deep()
+        return body
+
+    def _too_deep(self) -> InputError:
+        return self._error(
+            f"is nested more than {MAX_DEPTH} levels deep (operators and parentheses)",
+            "split the sum into fewer terms, or use a table or a CSV file for long data",
+        )
 
     def _check(self, node: ast.AST) -> None:
         """Walk the tree and refuse every node outside the whitelist."""
@@ -407,6 +422,16 @@ class _PowerToCall(ast.NodeTransformer):
                 func=ast.Name(id="_pow", ctx=ast.Load()), args=[node.left, node.right], keywords=[]
             )
         return node
+
+
+def _depth(tree: ast.AST) -> int:
+    """Depth of an expression tree, walked without recursion."""
+    deepest, pending = 0, [(tree, 1)]
+    while pending:
+        node, level = pending.pop()
+        deepest = max(deepest, level)
+        pending.extend((child, level + 1) for child in ast.iter_child_nodes(node))
+    return deepest
 
 
 class _Folder(ast.NodeTransformer):

@@ -490,3 +490,231 @@ def test_cli_run_quiet_prints_no_table(
     monkeypatch.chdir(run_case.parent)
     assert cli.main(["run", "--quiet", f"case/{PARAMETERS}"]) == 0
     assert capsys.readouterr().out == ""
+
+
+# -- untrusted inputs (issue 16): each refused before any step, naming the file, key or line --
+
+
+def _text(name: str, old: str, new: str) -> Callable[[Path], None]:
+    def edit(case: Path) -> None:
+        text = (case / name).read_text()
+        assert old in text
+        (case / name).write_text(text.replace(old, new, 1))
+
+    return edit
+
+
+def _bytes(name: str, data: bytes) -> Callable[[Path], None]:
+    return lambda case: (case / name).write_bytes(data)
+
+
+def _process(list_name: str, python_module: str, **settings: Any) -> Callable[[Path], None]:
+    descriptor = {"python_module": python_module, "kratos_module": "KratosMultiphysics"}
+    descriptor["Parameters"] = {"model_part_name": "Structure", **settings}
+    return _params(lambda p: p.setdefault(list_name, {}).update(extra=[descriptor]))
+
+
+def _chain(*edits: Callable[[Path], None]) -> Callable[[Path], None]:
+    return lambda case: [edit(case) for edit in edits] and None
+
+
+def _stepping(**stepping: Any) -> Callable[[Path], None]:
+    return _solver(lambda s: s.update(time_stepping=stepping))
+
+
+def _problem(**values: Any) -> Callable[[Path], None]:
+    return _params(lambda p: p["problem_data"].update(values))
+
+
+_MATERIAL = "plate_materials.json › properties › [0] › Material › Variables › "
+_CHECK = {"check_variables": ["DISPLACEMENT_X"]}
+
+UNTRUSTED_INPUTS: list[tuple[str, Callable[[Path], None], list[str]]] = [
+    ("nan_time_step", _stepping(time_step=float("nan")), ["number NaN", PARAMETERS, "line "]),
+    ("infinite_time_step", _stepping(time_step=float("inf")), ["number Infinity", "line "]),
+    ("overflowing_number", _text(PARAMETERS, '"time_step": 0.5', '"time_step": 1e999'), ["1e999"]),
+    (
+        "nan_in_time_step_table",
+        _stepping(time_step_table=[[0.0, 0.1], [1.0, float("nan")]]),
+        ["number NaN", "line "],
+    ),
+    (
+        "time_not_finite",
+        _chain(_problem(end_time=1.7e308), _stepping(time_step=1.5e308)),
+        ["TIME would become inf", "solver_settings › time_stepping"],
+    ),
+    (
+        "time_does_not_advance",
+        _chain(_problem(start_time=1.0e10, end_time=1.0e10 + 1.0), _stepping(time_step=1.0e-10)),
+        ["floating-point resolution of TIME", "solver_settings › time_stepping"],
+    ),
+    (
+        "too_many_steps",
+        _stepping(time_step=1.0e-9),
+        ["1e+09 steps from start_time 0 to end_time 1", "at most 10000000 steps"],
+    ),
+    (
+        "negative_time_step",
+        _stepping(time_step=-0.5),
+        ["solver_settings › time_stepping › time_step", "a number > 0"],
+    ),
+    (
+        "key_written_twice",
+        _text(PARAMETERS, '"end_time"', '"end_time": 5.0,\n        "end_time"'),
+        ['"end_time" is written twice', "lines 6 and 7", PARAMETERS],
+    ),
+    (
+        "negative_thickness",
+        _material(lambda m: m["Variables"].update(THICKNESS=-1.0)),
+        [_MATERIAL + "THICKNESS", "a number > 0"],
+    ),
+    (
+        "negative_friction",
+        _material(lambda m: m["Variables"].update(FRICTION_COEFFICIENT=-0.5)),
+        [_MATERIAL + "FRICTION_COEFFICIENT", "a number ≥ 0"],
+    ),
+    (
+        "negative_density",
+        _material(lambda m: m["Variables"].update(DENSITY=-1.0)),
+        [_MATERIAL + "DENSITY"],
+    ),
+    (
+        "absurd_young_modulus",
+        _material(lambda m: m["Variables"].update({"KratosMultiphysics.YOUNG_MODULUS": 1e300})),
+        [_MATERIAL + "KratosMultiphysics.YOUNG_MODULUS", "beyond any physical value"],
+    ),
+    (
+        "negative_thickness_in_the_mesh",
+        _text("plate.mdpa", "Begin Properties 0\n", "Begin Properties 0\n    THICKNESS -1.0\n"),
+        ["THICKNESS = -1 is out of range", "properties 0 of the mesh plate.mdpa"],
+    ),
+    (
+        "non_utf8_parameters",
+        _bytes(PARAMETERS, b'{"problem_data": {"problem_name": "caf\xe9"}}'),
+        [PARAMETERS, "is not UTF-8", "byte offset 38"],
+    ),
+    (
+        "non_utf8_materials",
+        _bytes("plate_materials.json", b'{"properties": []}\n\xff'),
+        ["plate_materials.json is not UTF-8", "byte offset 19 (line 2)"],
+    ),
+    ("deep_json", _bytes(PARAMETERS, b"[" * 100_000), [PARAMETERS, "deeper than 64 levels"]),
+    (
+        "long_operator_chain",
+        _load(lambda p: p.update(modulus="+".join(["t"] * 900))),
+        ["nested more than 100 levels", "loads_process_list › [0] › Parameters › modulus"],
+    ),
+    (
+        "relative_module",
+        _constraint(lambda c: c.update(python_module="..evil")),
+        ['"..evil" is not a module name', "constraints_process_list › [0] › python_module"],
+    ),
+    (
+        "device_as_materials",
+        _solver(lambda s: s["material_import_settings"].update(materials_filename="/dev/zero")),
+        ['"/dev/zero" is not a regular file', "material_import_settings › materials_filename"],
+    ),
+    (
+        "device_as_reference_results",
+        _process(
+            "processes", "from_json_check_result_process", input_file_name="/dev/zero", **_CHECK
+        ),
+        ['"/dev/zero" is not a regular file', "extra › [0] › Parameters › input_file_name"],
+    ),
+    (
+        "empty_mesh",
+        _bytes("plate.mdpa", b""),
+        ['plate.mdpa" defines no nodes: it is empty or unreadable', "input_filename"],
+    ),
+    (
+        "mesh_is_a_folder",
+        lambda case: (
+            (case / "folder.mdpa").mkdir()
+            or _solver(lambda s: s["model_import_settings"].update(input_filename="case/folder"))(
+                case
+            )
+        ),
+        ["folder.mdpa", "is a folder", "model_import_settings › input_filename"],
+    ),
+    (
+        "output_overwrites_materials",
+        _process(
+            "output_processes", "json_output_process", output_file_name="case/plate_materials.json"
+        ),
+        [
+            "is an input of this run",
+            "extra › [0] › Parameters › output_file_name",
+            "material_import_settings › materials_filename",
+        ],
+    ),
+    (
+        "output_overwrites_mesh",
+        _process("output_processes", "json_output_process", output_file_name="case/plate.mdpa"),
+        ["is an input of this run", "model_import_settings › input_filename"],
+    ),
+    (
+        "output_overwrites_parameters",
+        _process("output_processes", "json_output_process", output_file_name=f"case/{PARAMETERS}"),
+        ["is an input of this run", "input:    the parameters file"],
+    ),
+    (
+        "output_folder_under_a_file",
+        _process("output_processes", "vtk_output_process", output_path="case/plate.mdpa/vtk"),
+        ["cannot be written", "is a file, not a folder", "extra › [0] › Parameters › output_path"],
+    ),
+]
+
+
+@pytest.mark.parametrize(
+    ("edit", "fragments"),
+    [case[1:] for case in UNTRUSTED_INPUTS],
+    ids=[case[0] for case in UNTRUSTED_INPUTS],
+)
+def test_cli_run_untrusted_input_exits_two_naming_the_place(
+    run_case: Path,
+    edit: Callable[[Path], None],
+    fragments: list[str],
+    monkeypatch: pytest.MonkeyPatch,
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    edit(run_case)
+    inputs = {path: path.read_bytes() for path in run_case.iterdir() if path.is_file()}
+    monkeypatch.chdir(run_case.parent)
+    assert cli.main(["run", f"case/{PARAMETERS}"]) == 2
+    captured = capsys.readouterr()
+    errors = [line for line in captured.err.splitlines() if line.startswith("error: ")]
+    assert len(errors) == 1, captured.err
+    for fragment in fragments:
+        assert fragment in captured.err
+    assert "step " not in captured.out  # nothing was solved
+    assert all(path.read_bytes() == data for path, data in inputs.items())  # nothing overwritten
+
+
+def test_cli_run_messages_quote_huge_values_briefly_and_escape_nul(
+    run_case: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    _solver(lambda s: s.update({"max_iteration": "x" * 20_000, "k\x00": 1}))(run_case)
+    monkeypatch.chdir(run_case.parent)
+    assert cli.main(["run", f"case/{PARAMETERS}"]) == 2
+    err = capsys.readouterr().err
+    assert len(err) < 1500 and "\x00" not in err
+    assert "characters)" in err
+
+
+def test_cli_run_safe_refuses_case_modules_before_importing_them(
+    run_case: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    (run_case / "case_process.py").write_text(
+        "from pathlib import Path\nPath(__file__).with_name('imported').touch()\n\n\n"
+        "def Factory(settings, model):\n    return None\n"
+    )
+    _params(lambda p: p["processes"].update(own=[{"python_module": "case_process"}]))(run_case)
+    monkeypatch.chdir(run_case.parent)
+    assert cli.main(["run", "--safe", f"case/{PARAMETERS}"]) == 2
+    err = capsys.readouterr().err
+    assert "--safe refuses to import a module from the case folder" in err
+    assert "processes › own › [0] › python_module" in err
+    assert not (run_case / "imported").exists()
+    # the project's own processes still run with --safe
+    _params(lambda p: p["processes"].pop("own"))(run_case)
+    assert cli.main(["run", "--safe", "--quiet", f"case/{PARAMETERS}"]) == 0

@@ -504,6 +504,19 @@ class MechanicalSolver:
                 "one reaction per auxiliary DoF",
             )
 
+    def InputFiles(self) -> list[tuple[str, str]]:
+        """(path, where it is named) of the files the solver reads: mesh and materials."""
+        import_settings = self.settings["model_import_settings"]
+        files = [
+            (path, import_settings.Where("input_filename"))
+            for path in (self._mdpa_path, self._meshio_path)
+            if path
+        ]
+        if self._materials is not None:
+            where = self.settings["material_import_settings"].Where("materials_filename")
+            files.append((self._materials.filename, where))
+        return files
+
     # -- model part --
 
     def _CreateMainModelPart(self) -> None:

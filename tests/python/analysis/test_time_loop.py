@@ -2,10 +2,15 @@
 
 from __future__ import annotations
 
+import json
+import math
+from pathlib import Path
+
 import pytest
 
 import contact_app as ca
 from contact_app.analysis.time_loop import MAX_STEPS, count_steps, keep_advancing
+from contact_app.parameters import Parameters
 
 
 def _constant(delta: float):  # type: ignore[no-untyped-def]
@@ -45,3 +50,25 @@ def test_meaningless_step_sequences_are_refused(
 def test_a_table_that_never_reaches_the_end_is_bounded() -> None:
     with pytest.raises(ca.InputError, match=f"more than {MAX_STEPS} steps"):
         count_steps(0.0, 1.0, lambda time: 1.0e-8 if time < 0.5 else 0.1, "here")
+
+
+@pytest.mark.parametrize(("end", "delta", "steps"), [(0.05, 0.005, 10), (0.7, 0.1, 7)])
+def test_a_run_stops_at_end_time_without_an_extra_step(
+    case_dir: Path, in_tmp: Path, end: float, delta: float, steps: int
+) -> None:
+    path = case_dir / "plate_static_parameters.json"
+    parameters = json.loads(path.read_text())
+    parameters["problem_data"]["end_time"] = end
+    parameters["solver_settings"]["time_stepping"] = {"time_step": delta}
+    parameters["processes"].pop("json_check_process")
+    path.write_text(json.dumps(parameters))
+    analysis = ca.analysis.run(path, quiet=True)
+    info = analysis.model.GetModelPart("Structure").ProcessInfo
+    assert info[ca.STEP] == steps
+    assert info[ca.TIME] == pytest.approx(end, rel=1e-12)
+
+
+def test_a_nan_split_factor_built_in_python_is_refused() -> None:
+    settings = Parameters({"split_factor": math.nan}, "<parameters>", ("contact_settings",))
+    with pytest.raises(ca.InputError, match="contact_settings › split_factor"):
+        settings.ValidateAndAssignDefaults({"split_factor": 10.0})

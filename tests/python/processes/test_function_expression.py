@@ -150,3 +150,11 @@ def test_function_expression_deep_nesting_and_length_are_refused() -> None:
         FunctionExpression("(" * 500 + "t" + ")" * 500)
     with pytest.raises(ca.InputError, match="characters long"):
         FunctionExpression("+".join(["t"] * 3000))
+
+
+@pytest.mark.parametrize("terms", [900, 600])
+def test_deeply_nested_expressions_are_bounded(terms: int) -> None:
+    text = "+".join(["x"] * terms) if terms == 900 else "*".join(["(t+1)"] * terms)
+    with pytest.raises(ca.InputError, match="nested more than 100 levels deep") as failure:
+        FunctionExpression(text, "here")
+    assert len(str(failure.value)) < 1000  # the expression is quoted briefly
