@@ -9,7 +9,9 @@ results) and for JSON text given in memory. Beyond what :func:`json.loads` check
 * nesting deeper than :data:`MAX_DEPTH` (the parser would otherwise recurse until it fails);
 * a key written twice in one object (both lines: the last one would win silently);
 * ``NaN``, ``Infinity`` and numbers that overflow a double (``1e400``), which Python's parser
-  accepts although JSON has no such values.
+  accepts although JSON has no such values, and integers beyond 64 bits;
+* escapes of unpaired UTF-16 surrogates, which decode to strings that are not text (the C++
+  layer and the console could not encode them).
 
 :func:`quote` shortens and escapes a user value for a message.
 """
@@ -36,6 +38,9 @@ MAX_QUOTE = 200
 # Strings (keys or values) and brackets; numbers and literals are skipped by the search.
 _TOKEN = re.compile(r'"(?:[^"\\]|\\.)*"|[\[\]{}]', re.DOTALL)
 _COLON = re.compile(r"\s*:")
+_SURROGATE = re.compile(r"\\u[dD][89a-fA-F][0-9a-fA-F]{2}")
+#: Integers are ids, counts and orders: 64 bits, as in the C++ layer.
+_MAX_INT = 2**63 - 1
 
 
 def quote(value: Any, limit: int = MAX_QUOTE) -> str:
@@ -162,6 +167,37 @@ def _refuse_constant(name: str) -> float:
     raise _NonFinite(name)
 
 
+def _checked_int(text: str) -> int:
+    # The length test comes first: int() of a 5,000-digit string raises ValueError by itself.
+    if len(text.lstrip("-")) > 19 or abs(int(text)) > _MAX_INT:
+        raise _NonFinite(text)
+    return int(text)
+
+
+def _check_strings(value: Any, text: str, source: str) -> None:
+    """Refuse strings that are not text (unpaired surrogates written as escapes)."""
+    pending = [value]
+    while pending:
+        item = pending.pop()
+        if isinstance(item, dict):
+            pending.extend(item.keys())
+            pending.extend(item.values())
+        elif isinstance(item, list):
+            pending.extend(item)
+        elif isinstance(item, str):
+            try:
+                item.encode("utf-8")
+            except UnicodeEncodeError:
+                match = _SURROGATE.search(text)
+                line = f"line {_line(text, match.start())}" if match else "the file"
+                raise InputError(
+                    f'{source} holds the string "{quote(item, 80)}" with an unpaired surrogate '
+                    f"escape, which is not text\n  where:    {line}\n"
+                    "  expected: text (escapes \\uD800-\\uDFFF only as high-low pairs)\n"
+                    "  fix:      write the intended character"
+                ) from None
+
+
 def loads(text: str, source: str) -> Any:
     """Parse JSON text with the checks of the module docstring.
 
@@ -175,7 +211,12 @@ def loads(text: str, source: str) -> Any:
     """
     _check_structure(text, source)
     try:
-        return json.loads(text, parse_float=_finite_float, parse_constant=_refuse_constant)
+        value = json.loads(
+            text,
+            parse_float=_finite_float,
+            parse_int=_checked_int,
+            parse_constant=_refuse_constant,
+        )
     except json.JSONDecodeError as error:
         raise InputError(
             f"malformed JSON in {source}: {error.msg}\n"
@@ -187,11 +228,14 @@ def loads(text: str, source: str) -> Any:
         position = text.find(error.written)
         line = f"line {_line(text, position)}" if position >= 0 else "the file"
         raise InputError(
-            f"{source} holds the number {written}, which is not a finite double\n"
+            f"{source} holds the number {written}, which is not a finite double or 64-bit integer\n"
             f"  where:    {line}\n"
-            "  expected: a finite number (JSON has no NaN or Infinity; doubles end near 1.8e308)\n"
+            "  expected: a finite number (JSON has no NaN or Infinity; doubles end near 1.8e308, "
+            "integers at 64 bits)\n"
             "  fix:      write the intended finite value"
         ) from None
+    _check_strings(value, text, source)
+    return value
 
 
 def load_file(filename: str | Path, what: str, where: str = "") -> Any:

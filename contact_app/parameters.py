@@ -237,12 +237,16 @@ class Parameters:
             )
         return self._value
 
-    def _finite(self, values: list[float]) -> list[float]:
-        """Refuse NaN and infinities (JSON text cannot hold them; a dict built in Python can)."""
+    def _finite(self, values: list[int | float]) -> list[float]:
+        """Refuse NaN, infinities and huge integers (JSON text cannot hold them; a dict can)."""
         for value in values:
+            if isinstance(value, int) and abs(value) > 2**63 - 1:
+                raise self._error(
+                    f"an integer of {value.bit_length()} bits", "a 64-bit integer or a double"
+                )
             if not math.isfinite(value):
                 raise self._error(f"the number {value} is not finite", "a finite number")
-        return values
+        return [float(value) for value in values]
 
     def GetString(self) -> str:
         """Return the string; InputError otherwise."""
@@ -258,16 +262,16 @@ class Parameters:
 
     def GetDouble(self) -> float:
         """Return the number as a float; InputError otherwise."""
-        return self._finite([float(self._typed(self.IsNumber(), "a number"))])[0]
+        return self._finite([self._typed(self.IsNumber(), "a number")])[0]
 
     def GetVector(self) -> list[float]:
         """Return an array of numbers as floats; InputError otherwise."""
-        return self._finite([float(v) for v in self._typed(self.IsVector(), "an array of numbers")])
+        return self._finite(list(self._typed(self.IsVector(), "an array of numbers")))
 
     def GetMatrix(self) -> list[list[float]]:
         """Return an array of arrays of numbers; InputError otherwise."""
         rows = self._typed(self.IsMatrix(), "an array of arrays of numbers")
-        return [self._finite([float(v) for v in row]) for row in rows]
+        return [self._finite(list(row)) for row in rows]
 
     def GetStringArray(self) -> list[str]:
         """Return an array of strings; InputError otherwise."""
@@ -343,8 +347,7 @@ class Parameters:
         """Refuse a non-finite number, or one outside the range its key allows."""
         if isinstance(value, bool) or not isinstance(value, int | float):
             return
-        if not math.isfinite(value):
-            raise self._error(f'"{key}" is {value}', "a finite number", key=key)
+        self[key]._finite([value])  # a dict may hold NaN or a huge integer
         allowed = range_of(key, self._path[-1] if self._path else None)
         if allowed is not None and not allowed.contains(value):
             meaning = f" ({allowed.meaning})" if allowed.meaning else ""

@@ -21,6 +21,20 @@ def test_non_finite_numbers_are_refused_with_their_line(number: str) -> None:
     assert "line 3" in str(failure.value)
 
 
+@pytest.mark.parametrize("digits", [30, 5000])
+def test_integers_beyond_64_bits_are_refused(digits: int) -> None:
+    with pytest.raises(ca.InputError, match="64-bit integer") as failure:
+        json_input.loads('{"properties_id": 1' + "0" * digits + "}", "case.json")
+    assert len(str(failure.value)) < 600
+
+
+def test_unpaired_surrogate_escapes_are_refused_with_their_line() -> None:
+    with pytest.raises(ca.InputError, match="unpaired surrogate") as failure:
+        json_input.loads('{"model_part_name":\n "a\\udc80"}', "case.json")
+    assert "line 2" in str(failure.value)
+    assert json_input.loads('"\\ud83d\\ude00"', "x") == "\U0001f600"
+
+
 def test_a_key_written_twice_names_both_lines() -> None:
     text = '{\n  "problem_data": {\n    "end_time": 1.0,\n    "x": [1, {"end_time": 2}],\n'
     text += '    "end_time": 5.0\n  }\n}'
