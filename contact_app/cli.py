@@ -11,13 +11,14 @@ from __future__ import annotations
 
 import argparse
 import logging
+import os
 import sys
 import time
 from collections import Counter
 from collections.abc import Callable, Sequence
 
 import contact_app as ca
-from contact_app.json_input import quote
+from contact_app.json_input import not_regular, quote
 
 EXIT_OK = 0
 EXIT_NOT_CONVERGED = 1
@@ -76,6 +77,9 @@ def _info(args: argparse.Namespace) -> int:
     model_part = model.CreateModelPart("Structure")
     for name in INFO_HISTORICAL_VARIABLES:
         model_part.AddNodalSolutionStepVariable(ca.get_variable(name))
+    for candidate in (args.mdpa, args.mdpa + ".mdpa"):
+        if os.path.exists(candidate) and not os.path.isfile(candidate):
+            raise not_regular(candidate, "mdpa file")
     reader = ca.ModelPartIO(args.mdpa)
     reader.ReadModelPart(model_part)
     elapsed = time.perf_counter() - start

@@ -58,6 +58,18 @@ def quote(value: Any, limit: int = MAX_QUOTE) -> str:
     return f"{shown[:limit]}… ({len(text)} characters)"
 
 
+def not_regular(filename: str | Path, what: str, where: str = "") -> InputError:
+    """The error for an input that exists but is not a regular file (folder, device, FIFO)."""
+    kind = "a folder" if Path(filename).is_dir() else "not a regular file"
+    located = f"\n  where:    {where}" if where else ""
+    return InputError(
+        f'the {what} "{quote(str(filename))}" is {kind}{located}\n'
+        "  expected: a file on disk (not a folder, device, FIFO or socket: /dev/zero would be "
+        "read forever)\n"
+        "  fix:      name the file itself"
+    )
+
+
 def read_bytes(filename: str | Path, what: str, where: str = "") -> bytes:
     """Return the content of a regular file of at most :data:`MAX_BYTES`.
 
@@ -80,13 +92,8 @@ def read_bytes(filename: str | Path, what: str, where: str = "") -> bytes:
             "  fix:      check the path (relative paths start from the working directory)"
         ) from None
     with os.fdopen(descriptor, "rb") as stream:
-        status = os.fstat(descriptor)
-        if not stat.S_ISREG(status.st_mode):
-            raise InputError(
-                f'the {what} "{quote(str(filename))}" is not a regular file{located}\n'
-                "  expected: a file on disk (not a device, FIFO, socket or directory)\n"
-                "  fix:      name the JSON file itself"
-            )
+        if not stat.S_ISREG(os.fstat(descriptor).st_mode):
+            raise not_regular(filename, what, where)
         os.set_blocking(descriptor, True)
         data = stream.read(MAX_BYTES + 1)
     if len(data) > MAX_BYTES:

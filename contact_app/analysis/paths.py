@@ -16,17 +16,12 @@ from __future__ import annotations
 from pathlib import Path
 
 from .._core import InputError
-from ..json_input import quote
+from ..json_input import not_regular
 
 
 def _regular(path: str, where: str, what: str) -> str:
     if not Path(path).is_file():
-        kind = "a folder" if Path(path).is_dir() else "not a regular file"
-        raise InputError(
-            f'{what} "{quote(path)}" is {kind}\n  where:    {where}\n'
-            "  expected: a file on disk (not a folder, device, FIFO or socket)\n"
-            "  fix:      name the file itself"
-        )
+        raise not_regular(path, what, where)
     return path
 
 

@@ -718,3 +718,15 @@ def test_cli_run_safe_refuses_case_modules_before_importing_them(
     # the project's own processes still run with --safe
     _params(lambda p: p["processes"].pop("own"))(run_case)
     assert cli.main(["run", "--safe", "--quiet", f"case/{PARAMETERS}"]) == 0
+
+
+def test_cli_info_refuses_devices_and_folders(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    (tmp_path / "mesh.mdpa").mkdir()
+    for name, kind in (
+        ("/dev/zero", "is not a regular file"),
+        (str(tmp_path / "mesh"), "is a folder"),
+    ):
+        assert cli.main(["info", name]) == 2
+        assert kind in capsys.readouterr().err
