@@ -105,7 +105,7 @@ class Parameters:
         return " › ".join(quote(part, 80) for part in parts)
 
     def _error(self, what: str, expected: str, fix: str = "", key: str | None = None) -> InputError:
-        text = f"{what}\n  where:    {self.Where(key)}\n  expected: {expected}"
+        text = f"{quote(what, 300)}\n  where:    {self.Where(key)}\n  expected: {expected}"
         if fix:
             text += f"\n  fix:      {fix}"
         return InputError(text)

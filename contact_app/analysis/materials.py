@@ -35,6 +35,7 @@ import numpy as np
 
 import contact_app as ca
 
+from ..json_input import quote
 from ..model_part_lookup import get_model_part
 from ..parameters import Parameters, suggest
 from ..setting_ranges import Range
@@ -100,7 +101,7 @@ def _variable(settings: Parameters, key: str | None, name: str) -> Any:
         raise error(
             settings,
             key,
-            f'unknown variable "{name}"',
+            f'unknown variable "{quote(name)}"',
             "a registered variable name (e.g. YOUNG_MODULUS, POISSON_RATIO, DENSITY, THICKNESS)",
             suggest(bare, ca.registered_variables()) or "check the spelling",
         )
@@ -239,7 +240,7 @@ class MaterialsReader:
             raise error(
                 law,
                 "name",
-                f'unknown constitutive law "{written}"',
+                f'unknown constitutive law "{quote(written)}"',
                 "one of " + ", ".join(known),
                 suggest(name, known) or "use one of the registered laws above",
             )

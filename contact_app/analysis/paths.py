@@ -16,7 +16,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from .._core import InputError
-from ..json_input import not_regular
+from ..json_input import not_regular, quote
 
 
 def _regular(path: str, where: str, what: str) -> str:
@@ -69,7 +69,7 @@ class PathResolver:
                     return _regular(str(candidate), where, what)
             looked.append(str(self.base_dir / path) + " (and the same below its parent folders)")
         raise InputError(
-            f'{what} "{value}" not found\n  where:    {where}\n'
+            f'{what} "{quote(value)}" not found\n  where:    {where}\n'
             f"  expected: an existing file; looked for {' and '.join(looked)}\n"
             "  fix:      correct the path (relative paths start from the working directory, "
             "then from the folder of the parameters file)"

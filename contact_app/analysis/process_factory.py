@@ -147,7 +147,7 @@ class KratosProcessFactory:
                 raise error(
                     item,
                     key,
-                    f'unknown key "{key}" in a process descriptor',
+                    f'unknown key "{quote(key)}" in a process descriptor',
                     "one of " + ", ".join(f'"{k}"' for k in DESCRIPTOR_KEYS),
                     suggest(key, list(DESCRIPTOR_KEYS)),
                 )
@@ -182,7 +182,7 @@ class KratosProcessFactory:
             raise error(
                 item,
                 "kratos_module",
-                f'unknown kratos_module "{kratos_module}"',
+                f'unknown kratos_module "{quote(kratos_module)}"',
                 "one of " + ", ".join(f'"{k}"' for k in PACKAGES),
                 suggest(full, list(PACKAGES))
                 or "processes of other Kratos applications are not available",
@@ -230,7 +230,7 @@ class KratosProcessFactory:
         listing = ", ".join(known) if known else "(none yet)"
         hint = suggest(python_module, known)
         return ca.InputError(
-            f'unknown process module "{python_module}"\n  where:    {item.Where(key)}\n'
+            f'unknown process module "{quote(python_module)}"\n  where:    {item.Where(key)}\n'
             f"  expected: one of {listing}" + (f"\n  fix:      {hint}" if hint else "")
         )
 

@@ -28,6 +28,7 @@ from typing import Any
 
 import contact_app as ca
 
+from ..json_input import quote
 from ..parameters import Parameters, suggest
 from .analysis_stage import AnalysisStage
 from .outputs import CheckOutputs
@@ -130,7 +131,7 @@ def ValidateProjectParameters(parameters: Parameters) -> None:
         raise error(
             parameters,
             key,
-            f'unknown top-level key "{key}"',
+            f'unknown top-level key "{quote(key)}"',
             "one of "
             + ", ".join(f'"{k}"' for k in TOP_LEVEL_KEYS)
             + ' (or a key starting with "_" to disable a block)',

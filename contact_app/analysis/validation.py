@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from .._core import ConfigurationError, InputError
+from ..json_input import quote
 from ..parameters import Parameters, suggest
 
 
@@ -15,8 +16,11 @@ def _listing(choices: Sequence[str]) -> str:
 def error(
     settings: Parameters, key: str | None, what: str, expected: str, fix: str = ""
 ) -> InputError:
-    """Build an InputError located at ``settings`` (or its child ``key``)."""
-    text = f"{what}\n  where:    {settings.Where(key)}\n  expected: {expected}"
+    """Build an InputError located at ``settings`` (or its child ``key``).
+
+    ``what`` is escaped and capped, as it may quote a user value (a NUL, a 20,000-character line).
+    """
+    text = f"{quote(what, 300)}\n  where:    {settings.Where(key)}\n  expected: {expected}"
     if fix:
         text += f"\n  fix:      {fix}"
     return InputError(text)
@@ -42,7 +46,7 @@ def choice(settings: Parameters, key: str, choices: Sequence[str], what: str = "
         raise error(
             settings,
             key,
-            f'unknown {label} "{value}"',
+            f'unknown {label} "{quote(value)}"',
             f"one of {_listing(choices)}",
             suggest(value, list(choices)),
         )

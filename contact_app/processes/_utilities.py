@@ -17,7 +17,7 @@ import numpy as np
 
 from .. import _core
 from .._core import InputError
-from ..json_input import decode, read_bytes
+from ..json_input import decode, quote, read_bytes
 from ..parameters import Parameters, suggest
 from .function_expression import FunctionExpression
 
@@ -64,7 +64,7 @@ def get_variable(name: str, where: str, kinds: Sequence[str] | None = None) -> A
     except KeyError:
         hint = suggest(name, list(_core.registered_variables()))
         raise InputError(
-            f'unknown variable "{name}"\n  where:    {where}\n'
+            f'unknown variable "{quote(name)}"\n  where:    {where}\n'
             "  expected: a registered Kratos variable name such as DISPLACEMENT_X"
             + (f"\n  fix:      {hint}" if hint else "")
         ) from None
@@ -83,7 +83,7 @@ def get_flag(name: str, where: str) -> Any:
     except KeyError:
         hint = suggest(name, list(_core.registered_flags()))
         raise InputError(
-            f'unknown flag "{name}"\n  where:    {where}\n'
+            f'unknown flag "{quote(name)}"\n  where:    {where}\n'
             "  expected: a Kratos flag name such as ACTIVE, SLAVE or MASTER"
             + (f"\n  fix:      {hint}" if hint else "")
         ) from None
