@@ -2,6 +2,7 @@
 #include "custom_strategies/displacement_lagrange_multiplier_contact_criteria.h"
 
 #include <cmath>
+#include <algorithm>
 #include <limits>
 #include <sstream>
 #include <unordered_map>
@@ -9,6 +10,7 @@
 #include "contact_app/application.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/solving/builder_and_solvers/builder_and_solver.h"
+#include "contact_app/solving/convergence_criteria/round_off_bound.h"
 
 namespace contact_app {
 namespace {
@@ -28,6 +30,7 @@ int MultiplierComponent(const Dof& dof) {
 /// The vector multiplier of one node, gathered over its components (value, increment, residual).
 struct NodeMultiplier {
     Array3 value = Array3::Zero(), increment = Array3::Zero(), residual = Array3::Zero();
+    double state = 0.0;  ///< Σ z² over the components (RoundOffBound)
     int components = 0;
 };
 
@@ -55,10 +58,11 @@ DisplacementLagrangeMultiplierContactCriteria::Sums DisplacementLagrangeMultipli
     Sums sums;
     const auto& constrained = rBuilder.ConstrainedEquations();
     std::unordered_map<Node*, NodeMultiplier> vectors;
-    auto add = [&sums](int block, double value, double increment, double residual) {
+    auto add = [&sums](int block, double value, double increment, double residual, double state) {
         sums.value[block] += value * value;
         sums.increment[block] += increment * increment;
         sums.residual[block] += residual * residual;
+        sums.state[block] += state;
         ++sums.count[block];
     };
     for (const Dof* dof : rDofSet) {
@@ -69,15 +73,17 @@ DisplacementLagrangeMultiplierContactCriteria::Sums DisplacementLagrangeMultipli
         if (id < constrained.size() && constrained[id]) continue;
         const int component = MultiplierComponent(*dof);
         const double value = dof->GetSolutionStepValue(), increment = rDx[row], residual = rB[row];
+        const double state = std::pow(RoundOffBound::StateMagnitude(*dof), 2);
         if (component < 0) {
-            add(DISPLACEMENT, value, increment, residual);
+            add(DISPLACEMENT, value, increment, residual, state);
         } else if (component == 3 || !mTolerances.split_frictional) {
-            add(LM_NORMAL, value, increment, residual);
+            add(LM_NORMAL, value, increment, residual, state);
         } else {
             NodeMultiplier& node = vectors[&dof->GetNode()];
             node.value[component] = value;
             node.increment[component] = increment;
             node.residual[component] = residual;
+            node.state += state;
             ++node.components;
         }
     }
@@ -89,6 +95,7 @@ DisplacementLagrangeMultiplierContactCriteria::Sums DisplacementLagrangeMultipli
             sums.value[LM_NORMAL] += lm.value.squaredNorm();
             sums.increment[LM_NORMAL] += lm.increment.squaredNorm();
             sums.residual[LM_NORMAL] += lm.residual.squaredNorm();
+            sums.state[LM_NORMAL] += lm.state;
             sums.count[LM_NORMAL] += lm.components;
             continue;
         }
@@ -103,6 +110,9 @@ DisplacementLagrangeMultiplierContactCriteria::Sums DisplacementLagrangeMultipli
         split(lm.value, &sums.value[LM_NORMAL], &sums.value[tangent]);
         split(lm.increment, &sums.increment[LM_NORMAL], &sums.increment[tangent]);
         split(lm.residual, &sums.residual[LM_NORMAL], &sums.residual[tangent]);
+        // The magnitude bounds both parts (a projection does not enlarge it).
+        sums.state[LM_NORMAL] += lm.state;
+        sums.state[tangent] += lm.state;
         sums.count[LM_NORMAL] += 1;
         sums.count[tangent] += lm.components - 1;
     }
@@ -117,6 +127,15 @@ void DisplacementLagrangeMultiplierContactCriteria::InitializeSolutionStep(Model
     SystemVectorType zero = SystemVectorType::Zero(rB.size());
     const Sums sums = Accumulate(rDofSet, rDx.size() == rB.size() ? rDx : zero, rB, rBuilder);
     for (int b = 0; b < NUM_BLOCKS; ++b) mInitialResidual[b] = std::sqrt(sums.residual[b]);
+}
+
+void DisplacementLagrangeMultiplierContactCriteria::InitializePredictedResidual(DofsArrayType& rDofSet,
+                                                                                const SystemVectorType& rB,
+                                                                                const BuilderAndSolver& rBuilder) {
+    const SystemVectorType zero = SystemVectorType::Zero(rB.size());
+    const Sums sums = Accumulate(rDofSet, zero, rB, rBuilder);
+    for (int b = 0; b < NUM_BLOCKS; ++b)
+        mInitialResidual[b] = std::max(mInitialResidual[b], std::sqrt(sums.residual[b]));
 }
 
 bool DisplacementLagrangeMultiplierContactCriteria::PostCriteria(ModelPart& rModelPart, DofsArrayType& rDofSet,
@@ -137,12 +156,15 @@ bool DisplacementLagrangeMultiplierContactCriteria::PostCriteria(ModelPart& rMod
                                          mTolerances.stick_relative, mTolerances.slip_relative};
     const double absolute[NUM_BLOCKS] = {mTolerances.displacement_absolute, mTolerances.lm_absolute,
                                          mTolerances.stick_absolute, mTolerances.slip_absolute};
+    bool displacement_round_off = false;  // the blocks run in order: DISPLACEMENT first
     for (int b = 0; b < NUM_BLOCKS; ++b) {
         mRatio[b] = mAbsolute[b] = 0.0;
         mConverged[b] = true;
+        mAtRoundOff[b] = false;
         if (sums.count[b] == 0) continue;
         const double n = static_cast<double>(sums.count[b]);
-        if (MeasureOf(static_cast<Block>(b)) == ContactBlockMeasure::INCREMENT) {
+        const bool increment_measure = MeasureOf(static_cast<Block>(b)) == ContactBlockMeasure::INCREMENT;
+        if (increment_measure) {
             const double dx = std::sqrt(sums.increment[b]), x = std::sqrt(sums.value[b]);
             // A zero increment is converged (the reference replaces it by 1, which fails the absolute test).
             mRatio[b] = dx < kEps ? 0.0 : (x < kEps ? (b == DISPLACEMENT ? dx : 0.0) : dx / x);
@@ -157,6 +179,13 @@ bool DisplacementLagrangeMultiplierContactCriteria::PostCriteria(ModelPart& rMod
             mAbsolute[b] = r / n;
         }
         mConverged[b] = mRatio[b] <= relative[b] || mAbsolute[b] < absolute[b];
+        // Round-off: the block's correction, or for a multiplier block a non-zero displacement correction at
+        // round-off (for a fixed active and slip set the equations are linear in the multipliers, so such a Δu
+        // leaves the updated state at round-off whatever Δλ was; the mortar criterion judges the sets).
+        const bool round_off = RoundOffBound::IsRoundOff(std::sqrt(sums.increment[b]), sums.state[b],
+                                                         increment_measure ? 0.0 : sums.residual[b]);
+        if (b == DISPLACEMENT) displacement_round_off = round_off && sums.increment[b] > 0.0;
+        if (!mConverged[b]) mAtRoundOff[b] = mConverged[b] = round_off || displacement_round_off;
     }
     // The multiplier blocks are not judged while nothing is in contact (their unknowns are zero by construction).
     if (active == 0 && !mTolerances.ensure_contact)
@@ -177,6 +206,7 @@ std::string DisplacementLagrangeMultiplierContactCriteria::LastNorms() const {
     for (int b = 0; b < blocks; ++b) {
         if (b > 0) out << "; ";
         out << kBlockNames[b] << " ratio " << mRatio[b] << " abs " << mAbsolute[b];
+        if (mAtRoundOff[b]) out << " (round-off)";
     }
     return out.str();
 }

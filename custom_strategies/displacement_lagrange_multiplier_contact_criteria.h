@@ -34,8 +34,10 @@ struct ContactCriteriaTolerances {
 /// DisplacementLagrangeMultiplier[Residual|Mixed][Frictional]ContactCriteria, kratos_cpp_internals.md §9).
 /// Displacement DoFs are DISPLACEMENT_X/Y/Z (and ROTATION_*); multiplier DoFs LAGRANGE_MULTIPLIER_CONTACT_PRESSURE,
 /// VECTOR_LAGRANGE_MULTIPLIER_X/Y/Z and SCALAR_LAGRANGE_MULTIPLIER; other DoFs count with the displacements. Only free,
-/// unconstrained equations count. Residual ratios are ‖r‖ / ‖r₀‖ with r₀ the step-start residual, or the first
-/// non-zero one for a block that had none (the reference compares squared norms, which squares its tolerances). The frictional split projects each node's multiplier on its NORMAL: λ_n = (λ·n) n, λ_t = λ − λ_n
+/// unconstrained equations count. Residual ratios are ‖r‖ / ‖r₀‖ with r₀ the larger of the step-start residual and
+/// the residual at the predicted state, or the first non-zero one for a block that had none (the reference compares
+/// squared norms, which squares its tolerances). A block whose correction is at round-off (RoundOffBound) is
+/// converged too. The frictional split projects each node's multiplier on its NORMAL: λ_n = (λ·n) n, λ_t = λ − λ_n
 /// (the reference uses the component-wise product λ_c n_c, which is not a projection); nodes with μ ≈ 0 count as
 /// normal only.
 class DisplacementLagrangeMultiplierContactCriteria : public ConvergenceCriteria {
@@ -46,6 +48,8 @@ public:
     void InitializeSolutionStep(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
                                 const SystemVectorType& rDx, const SystemVectorType& rB,
                                 const BuilderAndSolver& rBuilder) override;
+    void InitializePredictedResidual(DofsArrayType& rDofSet, const SystemVectorType& rB,
+                                     const BuilderAndSolver& rBuilder) override;
     bool PostCriteria(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
                       const SystemVectorType& rDx, const SystemVectorType& rB,
                       const BuilderAndSolver& rBuilder) override;
@@ -64,6 +68,8 @@ private:
         double value[NUM_BLOCKS] = {0.0, 0.0, 0.0, 0.0};
         double increment[NUM_BLOCKS] = {0.0, 0.0, 0.0, 0.0};
         double residual[NUM_BLOCKS] = {0.0, 0.0, 0.0, 0.0};
+        /// Σ z² of RoundOffBound.
+        double state[NUM_BLOCKS] = {0.0, 0.0, 0.0, 0.0};
         std::size_t count[NUM_BLOCKS] = {0, 0, 0, 0};
         std::size_t active_nodes = 0;
     };
@@ -79,6 +85,7 @@ private:
     double mRatio[NUM_BLOCKS] = {0.0, 0.0, 0.0, 0.0};
     double mAbsolute[NUM_BLOCKS] = {0.0, 0.0, 0.0, 0.0};
     bool mConverged[NUM_BLOCKS] = {false, false, false, false};
+    bool mAtRoundOff[NUM_BLOCKS] = {false, false, false, false};
 };
 
 }  // namespace contact_app

@@ -114,6 +114,7 @@ bool ResidualBasedNewtonRaphsonMPCContactStrategy::NewtonLoop() {
         if (mSettings.move_mesh_flag) MoveMesh();
         const bool pre = mCriteria->PreCriteria(mModelPart, mBuilder->GetDofSet(), mA, mDx, mB);
         mBuilder->BuildAndSolve(*mScheme, mModelPart, mA, mDx, mB);
+        if (mIterations == 1) mCriteria->InitializePredictedResidual(mBuilder->GetDofSet(), mB, *mBuilder);
         UpdateSolution();
         mScheme->FinalizeNonLinIteration(mModelPart, mA, mDx, mB);
         // The criterion reads the contact forces from the reactions of the constraint slaves.

@@ -23,6 +23,12 @@ void CompositeCriteria::InitializeSolutionStep(ModelPart& rModelPart, DofsArrayT
     mSecond->InitializeSolutionStep(rModelPart, rDofSet, rA, rDx, rB, rBuilder);
 }
 
+void CompositeCriteria::InitializePredictedResidual(DofsArrayType& rDofSet, const SystemVectorType& rB,
+                                                    const BuilderAndSolver& rBuilder) {
+    mFirst->InitializePredictedResidual(rDofSet, rB, rBuilder);
+    mSecond->InitializePredictedResidual(rDofSet, rB, rBuilder);
+}
+
 void CompositeCriteria::FinalizeSolutionStep(ModelPart& rModelPart, DofsArrayType& rDofSet,
                                              const SparseMatrixType& rA, const SystemVectorType& rDx,
                                              const SystemVectorType& rB) {

@@ -18,6 +18,8 @@ public:
     void InitializeSolutionStep(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
                                 const SystemVectorType& rDx, const SystemVectorType& rB,
                                 const BuilderAndSolver& rBuilder) override;
+    void InitializePredictedResidual(DofsArrayType& rDofSet, const SystemVectorType& rB,
+                                     const BuilderAndSolver& rBuilder) override;
     void FinalizeSolutionStep(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
                               const SystemVectorType& rDx, const SystemVectorType& rB) override;
     bool PreCriteria(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,

@@ -26,6 +26,11 @@ public:
     virtual void InitializeSolutionStep(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
                                         const SystemVectorType& rDx, const SystemVectorType& rB,
                                         const BuilderAndSolver& rBuilder);
+    /// Called once per Newton loop after the first build, with @p rB the residual at the predicted state (before
+    /// the first correction). Residual criteria measure their ratio against the larger of this and the step-start
+    /// residual: a prescribed displacement or a predictor moves the state after the step-start residual was taken.
+    virtual void InitializePredictedResidual(DofsArrayType& rDofSet, const SystemVectorType& rB,
+                                             const BuilderAndSolver& rBuilder) {}
     virtual void FinalizeSolutionStep(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
                                       const SystemVectorType& rDx, const SystemVectorType& rB) {}
     virtual bool PreCriteria(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "contact_app/kernel/exceptions.h"
+#include "contact_app/solving/convergence_criteria/round_off_bound.h"
 
 namespace contact_app {
 
@@ -18,7 +19,7 @@ DisplacementCriteria::DisplacementCriteria(double relative_tolerance, double abs
 
 bool DisplacementCriteria::PostCriteria(ModelPart&, DofsArrayType& rDofSet, const SparseMatrixType&,
                                         const SystemVectorType& rDx, const SystemVectorType&, const BuilderAndSolver&) {
-    double increment = 0.0, reference = 0.0;
+    double increment = 0.0, reference = 0.0, magnitude = 0.0;
     std::size_t free_count = 0;
     for (const Dof* dof : rDofSet) {
         if (dof->IsFixed()) continue;
@@ -26,8 +27,10 @@ bool DisplacementCriteria::PostCriteria(ModelPart&, DofsArrayType& rDofSet, cons
         if (id >= rDx.size()) continue;
         increment += rDx[id] * rDx[id];
         reference += dof->GetSolutionStepValue() * dof->GetSolutionStepValue();
+        magnitude += RoundOffBound::StateMagnitude(*dof) * RoundOffBound::StateMagnitude(*dof);
         ++free_count;
     }
+    mAtRoundOff = false;
     if (free_count == 0) {
         mRatio = mAbsolute = 0.0;
         return true;
@@ -38,13 +41,16 @@ bool DisplacementCriteria::PostCriteria(ModelPart&, DofsArrayType& rDofSet, cons
     if (reference < eps) reference = increment;
     mRatio = increment < eps ? 0.0 : increment / reference;
     mAbsolute = increment / std::sqrt(static_cast<double>(free_count));
-    return mRatio <= mRelativeTolerance || mAbsolute < mAbsoluteTolerance;
+    if (mRatio <= mRelativeTolerance || mAbsolute < mAbsoluteTolerance) return true;
+    mAtRoundOff = RoundOffBound::IsRoundOff(increment, magnitude, 0.0);
+    return mAtRoundOff;
 }
 
 std::string DisplacementCriteria::LastNorms() const {
     std::ostringstream out;
     out.precision(3);
     out << std::scientific << "dx ratio " << mRatio << " abs " << mAbsolute;
+    if (mAtRoundOff) out << " (round-off)";
     return out.str();
 }
 

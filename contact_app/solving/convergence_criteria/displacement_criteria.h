@@ -6,7 +6,8 @@
 namespace contact_app {
 
 /// ‖Δx_free‖/‖x_free‖ ≤ relative tolerance or ‖Δx_free‖/√n_free < absolute tolerance
-/// (Kratos DisplacementCriteria, ../shared/spec/kratos_structural.md §6.1).
+/// (Kratos DisplacementCriteria, ../shared/spec/kratos_structural.md §6.1), or an increment at round-off:
+/// ‖Δx_free‖ below the RoundOffBound floor of the state it corrects.
 class DisplacementCriteria : public ConvergenceCriteria {
 public:
     DisplacementCriteria(double relative_tolerance, double absolute_tolerance);
@@ -17,12 +18,15 @@ public:
     std::string Info() const override { return "displacement_criterion"; }
     double LastRatio() const { return mRatio; }
     double LastAbsolute() const { return mAbsolute; }
+    /// Whether the last check passed at round-off only.
+    bool LastAtRoundOff() const { return mAtRoundOff; }
 
 private:
     double mRelativeTolerance;
     double mAbsoluteTolerance;
     double mRatio = 0.0;
     double mAbsolute = 0.0;
+    bool mAtRoundOff = false;
 };
 
 }  // namespace contact_app

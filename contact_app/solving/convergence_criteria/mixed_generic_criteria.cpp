@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "contact_app/kernel/exceptions.h"
+#include "contact_app/solving/convergence_criteria/round_off_bound.h"
 
 namespace contact_app {
 
@@ -28,7 +29,7 @@ std::size_t MixedGenericCriteria::GroupOf(const Dof& rDof) const {
 bool MixedGenericCriteria::PostCriteria(ModelPart&, DofsArrayType& rDofSet, const SparseMatrixType&,
                                         const SystemVectorType& rDx, const SystemVectorType&, const BuilderAndSolver&) {
     const std::size_t groups = mEntries.size() + 1;
-    std::vector<double> increment(groups, 0.0), reference(groups, 0.0);
+    std::vector<double> increment(groups, 0.0), reference(groups, 0.0), magnitude(groups, 0.0);
     std::vector<std::size_t> count(groups, 0);
     for (const Dof* dof : rDofSet) {
         const auto id = static_cast<Eigen::Index>(dof->EquationId());
@@ -36,6 +37,7 @@ bool MixedGenericCriteria::PostCriteria(ModelPart&, DofsArrayType& rDofSet, cons
         const std::size_t group = GroupOf(*dof);
         increment[group] += rDx[id] * rDx[id];
         reference[group] += dof->GetSolutionStepValue() * dof->GetSolutionStepValue();
+        magnitude[group] += RoundOffBound::StateMagnitude(*dof) * RoundOffBound::StateMagnitude(*dof);
         ++count[group];
     }
     constexpr double eps = std::numeric_limits<double>::epsilon();
@@ -49,8 +51,10 @@ bool MixedGenericCriteria::PostCriteria(ModelPart&, DofsArrayType& rDofSet, cons
         mRatios[g] = dx < eps ? 0.0 : dx / x;
         mAbsolutes[g] = dx / std::sqrt(static_cast<double>(count[g]));
         const Entry& tolerances = g < mEntries.size() ? mEntries[g] : mEntries.front();
+        // An increment below the round-off floor of its state cannot get smaller (RoundOffBound).
         converged = converged && (mRatios[g] <= tolerances.relative_tolerance ||
-                                  mAbsolutes[g] < tolerances.absolute_tolerance);
+                                  mAbsolutes[g] < tolerances.absolute_tolerance ||
+                                  RoundOffBound::IsRoundOff(dx, magnitude[g], 0.0));
     }
     return converged;
 }

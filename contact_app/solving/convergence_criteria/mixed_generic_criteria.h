@@ -10,8 +10,8 @@ namespace contact_app {
 /// Increment criterion with one tolerance pair per variable (Kratos MixedGenericCriteria): for each
 /// listed variable (a 3-vector groups its components) ratio = ‖Δx_var‖/‖x_var‖ and
 /// abs = ‖Δx_var‖/√n_var over its free DoFs; converged when every variable has ratio ≤ its relative
-/// tolerance or abs < its absolute tolerance. DoFs of other variables form one more group checked
-/// with the first variable's tolerances, so no unknown is left unchecked.
+/// tolerance or abs < its absolute tolerance or ‖Δx_var‖ is at round-off (RoundOffBound). DoFs of other
+/// variables form one more group checked with the first variable's tolerances, so no unknown is left unchecked.
 class MixedGenericCriteria : public ConvergenceCriteria {
 public:
     struct Entry {

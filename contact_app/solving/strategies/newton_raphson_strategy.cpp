@@ -47,6 +47,7 @@ bool NewtonRaphsonStrategy::Iterate() {
     mScheme->InitializeNonLinIteration(mModelPart, mA, mDx, mB);
     const bool pre = mCriteria->PreCriteria(mModelPart, mBuilder->GetDofSet(), mA, mDx, mB);
     mBuilder->BuildAndSolve(*mScheme, mModelPart, mA, mDx, mB);
+    if (mIterations == 1) mCriteria->InitializePredictedResidual(mBuilder->GetDofSet(), mB, *mBuilder);
     UpdateSolution();
     mScheme->FinalizeNonLinIteration(mModelPart, mA, mDx, mB);
     if (!pre) return false;

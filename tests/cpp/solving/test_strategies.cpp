@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Builders, schemes, criteria and strategies on spring chains and oscillators with exact answers.
 #include <cmath>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 #include "contact_app/solving/convergence_criteria/displacement_criteria.h"
 #include "contact_app/solving/convergence_criteria/mixed_generic_criteria.h"
 #include "contact_app/solving/convergence_criteria/residual_criteria.h"
+#include "contact_app/solving/convergence_criteria/round_off_bound.h"
 #include "contact_app/solving/linear_solvers/linear_solver_factory.h"
 #include "contact_app/solving/schemes/bossak_scheme.h"
 #include "contact_app/solving/strategies/line_search_strategy.h"
@@ -130,6 +132,38 @@ TEST(CompositeCriteria, AndNeedsBothOrNeedsOne) {
                                    std::make_shared<CompositeCriteria>(CompositeCriteria::Mode::And, loose, strict), 3);
     with_and.Solve();
     EXPECT_EQ(with_and.GetIterationNumber(), 3);
+}
+
+TEST(RoundOffBound, ACorrectionBelowThePrecisionOfTheStateIsRoundOff) {
+    const double eps = std::numeric_limits<double>::epsilon();
+    const double state = 4.0;  // Σ z², ‖z‖ = 2
+    EXPECT_TRUE(RoundOffBound::IsRoundOff(RoundOffBound::kRoundOffFactor * eps * 2.0, state, 1.0));
+    EXPECT_FALSE(RoundOffBound::IsRoundOff(RoundOffBound::kRoundOffFactor * eps * 2.1, state, 1.0));
+    EXPECT_FALSE(RoundOffBound::IsRoundOff(0.0, state, 1.0));  // no correction of a residual: no progress
+    EXPECT_TRUE(RoundOffBound::IsRoundOff(0.0, state, 0.0));
+}
+
+TEST(ResidualCriteria, NewtonStopsWhenItsCorrectionIsRoundOff) {
+    for (const bool by_residual : {true, false}) {
+        Model model;
+        ModelPart& part = MakeLine(model, 7);
+        AddSprings(part, 3.3e10, 1.0);  // nodal forces of order 1e10: their round-off is far above 1e-300
+        // Stretches of order 0.1 (residual) or 5 (increment: a round-off Δx above ε itself).
+        const double load = by_residual ? 7.7e9 : 7.7e12;
+        for (IndexType id = 2; id <= 7; ++id) AddForce(part, 100 + id, id, load / static_cast<double>(id));
+        part.GetNode(1).Fix(DISPLACEMENT_X);
+        auto residual = std::make_shared<ResidualCriteria>(1e-30, 1e-300);
+        auto increment = std::make_shared<DisplacementCriteria>(1e-30, 1e-300);
+        ConvergenceCriteria::Pointer criteria = residual;
+        if (!by_residual) criteria = increment;
+        NewtonRaphsonStrategy strategy(part, std::make_shared<Scheme>(), MakeBuilder(true), criteria, 30);
+        EXPECT_TRUE(strategy.Solve()) << (by_residual ? "residual" : "displacement");
+        EXPECT_TRUE(by_residual ? residual->LastAtRoundOff() : increment->LastAtRoundOff())
+            << (by_residual ? "residual" : "displacement");
+        const double e = part.GetNode(7).FastGetSolutionStepValue(DISPLACEMENT_X) -
+                         part.GetNode(6).FastGetSolutionStepValue(DISPLACEMENT_X);
+        EXPECT_NEAR(3.3e10 * (e + e * e * e), load / 7.0, 1e-14 * load);
+    }
 }
 
 TEST(MasterSlaveConstraints, TyingTwoChainsMakesOneChain) {
