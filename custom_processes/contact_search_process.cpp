@@ -14,6 +14,7 @@
 #include "contact_app/kernel/registry.h"
 #include "custom_conditions/paired_condition.h"
 #include "custom_processes/self_contact_utilities.h"
+#include "custom_utilities/contact_utilities.h"
 #include "custom_utilities/index_map.h"
 #include "custom_utilities/mortar_normals.h"
 
@@ -566,14 +567,7 @@ void ContactSearchProcess::CheckPairing() {
 }
 
 void ContactSearchProcess::ComputeWeightedReaction() {
-    const bool weighted_gap = mrMainModelPart.GetRootModelPart().HasNodalSolutionStepVariable(WEIGHTED_GAP);
-    const bool weighted_slip = mrMainModelPart.GetRootModelPart().HasNodalSolutionStepVariable(WEIGHTED_SLIP);
-    for (const auto& node : mpContactPart->Nodes()) {
-        if (weighted_gap) node->FastGetSolutionStepValue(WEIGHTED_GAP) = 0.0;
-        if (weighted_slip) node->FastGetSolutionStepValue(WEIGHTED_SLIP) = Array3::Zero();
-        node->SetValue(NODAL_AREA, 0.0);  // every family accumulates both in AddExplicitContribution
-        node->SetValue(AREA_WEIGHTED_PAIR_GAP, 0.0);
-    }
+    for (const auto& node : mpContactPart->Nodes()) ContactUtilities::ResetExplicitNodalValues(*node);
     const ProcessInfo& process_info = mrMainModelPart.GetProcessInfo();
     for (const auto& pair : mpComputingPart->Conditions()) pair->AddExplicitContribution(process_info);
 }

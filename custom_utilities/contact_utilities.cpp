@@ -133,15 +133,17 @@ void ContactUtilities::CleanContactModelParts(ModelPart& model_part) {
 void ContactUtilities::ComputeExplicitContributionConditions(ModelPart& model_part) {
     for (const auto& condition : model_part.Conditions()) {
         Geometry& geometry = condition->GetGeometry();
-        for (std::size_t i = 0; i < geometry.size(); ++i) {
-            ZeroNodal(geometry[i], WEIGHTED_GAP);
-            ZeroNodal(geometry[i], WEIGHTED_SLIP);
-            geometry[i].SetValue(NODAL_AREA, 0.0);
-            geometry[i].SetValue(AREA_WEIGHTED_PAIR_GAP, 0.0);
-        }
+        for (std::size_t i = 0; i < geometry.size(); ++i) ResetExplicitNodalValues(geometry[i]);
     }
     const ProcessInfo& process_info = model_part.GetProcessInfo();
     for (const auto& condition : model_part.Conditions()) condition->AddExplicitContribution(process_info);
+}
+
+void ContactUtilities::ResetExplicitNodalValues(Node& node) {
+    ZeroNodal(node, WEIGHTED_GAP);
+    ZeroNodal(node, WEIGHTED_SLIP);
+    node.SetValue(NODAL_AREA, 0.0);
+    node.SetValue(AREA_WEIGHTED_PAIR_GAP, 0.0);
 }
 
 void ContactUtilities::ActivateConditionWithActiveNodes(ModelPart& model_part) {

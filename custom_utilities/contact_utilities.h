@@ -50,10 +50,12 @@ public:
     static bool CheckModelPartHasRotationDoF(const ModelPart& model_part);
     /// @brief Removes (from @p model_part and below) the conditions that are pairs (geometry with geometry parts).
     static void CleanContactModelParts(ModelPart& model_part);
-    /// @brief Refreshes the explicit nodal contact values: zeroes WEIGHTED_GAP, WEIGHTED_SLIP (historical when
-    ///        stored, else non-historical) and NODAL_AREA on the nodes of every condition of @p model_part, then
-    ///        calls AddExplicitContribution of every condition with the root ProcessInfo.
+    /// @brief Refreshes the explicit nodal contact values: ResetExplicitNodalValues on the nodes of every condition
+    ///        of @p model_part, then AddExplicitContribution of every condition with the root ProcessInfo.
     static void ComputeExplicitContributionConditions(ModelPart& model_part);
+    /// @brief Before the pairs accumulate into @p node: WEIGHTED_GAP, WEIGHTED_SLIP (historical when stored, else
+    ///        non-historical), NODAL_AREA and AREA_WEIGHTED_PAIR_GAP := 0.
+    static void ResetExplicitNodalValues(Node& node);
     /// @brief A pair condition is ACTIVE iff one of its slave (geometry part 0) nodes is ACTIVE; conditions without
     ///        geometry parts use their own nodes.
     static void ActivateConditionWithActiveNodes(ModelPart& model_part);
