@@ -19,7 +19,8 @@ Order of the calls (``kratos_python_layer.md`` §1.4):
 
 A step that does not converge is reported and the loop goes on, as in Kratos, unless the stage
 was created with ``stop_on_non_convergence``: then it raises ``ConvergenceError`` before that
-step's finalize and output hooks, so the outputs end at the last converged step.
+step's finalize and output hooks, so the outputs end at the last converged step. Step cutting
+that gives up always stops so, with the model back at its last converged state and TIME.
 """
 
 from __future__ import annotations
@@ -70,6 +71,8 @@ class AnalysisStage:
         self.time = self.start_time
         self._last_delta = 0.0  # the last step, for the end-of-loop tolerance
         self._solver: Any = None
+        #: Why step cutting gave up (the run then stops), or "".
+        self._gave_up = ""
         self._list_of_processes: list[Any] = []
         self._list_of_output_processes: list[Any] = []
 
@@ -131,7 +134,7 @@ class AnalysisStage:
                     converged = self._SolveWithSubsteps(*cutting)
                 self.reporter.add_builder_timings(builder.GetTimings())
                 self.reporter.record_step(self._StepRecord(converged))
-                if not converged and self.stop_on_non_convergence:
+                if not converged and (self.stop_on_non_convergence or self._gave_up):
                     self._StopOnNonConvergence()
                 self.FinalizeSolutionStep()
             with self.reporter.phase("output"):
@@ -145,6 +148,9 @@ class AnalysisStage:
         state (buffer 1 copied into the current step, the mesh moved back) and runs the processes'
         and the solver's step hooks at its own time. Converged sub-steps but the last are finalised
         and the time is cloned, so the step ends at its original time (STEP counts the sub-steps).
+        When a sub-step still fails after ``max_number_splits`` splits, the model is put back to its
+        last converged state (``_RestoreLastConverged``) and the run stops: going on would start the
+        next step from a state of a time that was never converged.
 
         Returns:
             Whether the whole step was solved.
@@ -158,6 +164,7 @@ class AnalysisStage:
         splits = 1
         tolerance = 1.0e-12 * max(abs(target), 1.0)
         time = start
+        converged_delta = info[ca.DELTA_TIME]
         utils = ca.VariableUtils()
         while time < target - tolerance:
             following = min(time + delta, target)
@@ -169,6 +176,7 @@ class AnalysisStage:
             self.InitializeSolutionStep()
             solver.Predict()
             if bool(solver.SolveSolutionStep()):
+                converged_delta = following - time
                 time = following
                 if time < target - tolerance:
                     self.FinalizeSolutionStep()
@@ -176,16 +184,33 @@ class AnalysisStage:
                 continue
             splits += 1
             if splits > max_number_splits:
-                logger.warning(
-                    "step cut: still not converged after %d splits at TIME = %.6g",
-                    max_number_splits,
-                    following,
+                self._gave_up = (
+                    f"step cutting gave up: a sub-step to TIME = {following:.6g} did not converge "
+                    f"after max_number_splits = {max_number_splits} splits (sub-step "
+                    f"{following - time:.3g}); TIME = {target:.6g} was not reached"
                 )
-                info[ca.TIME] = target
+                self._RestoreLastConverged(time, converged_delta)
                 return False
             delta /= split_factor
         self.time = target
         return True
+
+    def _RestoreLastConverged(self, time: float, delta: float) -> None:
+        """Put the model back to its last converged state, at ``time``.
+
+        The historical values of the last converged (sub-)step (buffer 1) are copied into the
+        current step, the mesh is moved back, TIME and DELTA_TIME are those of that state, and the
+        processes' step values (loads, prescribed values) are applied again at that time, so that
+        nothing of the failed sub-step is left under any time.
+        """
+        part = self._GetSolver().GetComputingModelPart().GetRootModelPart()
+        utils = ca.VariableUtils()
+        utils.CopySolutionStepData(part, 1, 0)
+        utils.UpdateCurrentPosition(part.Nodes)
+        part.ProcessInfo[ca.TIME] = time
+        part.ProcessInfo[ca.DELTA_TIME] = delta
+        self.time = time
+        self.ApplyBoundaryConditions()
 
     def Finalize(self) -> None:
         """Every process ``ExecuteFinalize``, then ``solver.Finalize``."""
@@ -324,6 +349,15 @@ class AnalysisStage:
     def _StopOnNonConvergence(self) -> None:
         solver = self._GetSolver()
         info = solver.GetComputingModelPart().ProcessInfo
+        if self._gave_up:
+            raise ca.ConvergenceError(
+                f"{self._gave_up}; last norms: {solver.LastNorms() or 'n/a'}\n"
+                f"  stopped:  the model is left at its last converged state, TIME = "
+                f"{info[ca.TIME]:.6g} (its loads and displacements); the outputs end at the last "
+                "converged step\n"
+                "  fix:      reduce the time step, raise max_iteration or max_number_splits, or "
+                "check loads and supports"
+            )
         raise ca.ConvergenceError(
             f"step {info[ca.STEP]} (TIME = {info[ca.TIME]:.6g}) did not converge in "
             f"{solver.GetSolutionStrategy().GetIterationNumber()} iterations; last norms: "
