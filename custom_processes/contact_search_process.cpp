@@ -417,6 +417,7 @@ void ContactSearchProcess::CreatePairConditions() {
             map.SetNewEntityId(master_id, AddPairing(*slave, *master)->Id());
         }
     }
+    mSymmetryMultipliers = ContactUtilities::FixSymmetryPlaneMultipliers(*mpComputingPart, mSymmetryMultipliers);
 }
 
 Condition::Pointer ContactSearchProcess::AddPairing(Condition& slave, Condition& master) {

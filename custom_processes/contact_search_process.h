@@ -135,6 +135,7 @@ private:
     SearchTree mTree;
     double mThickness = 1.0;
     std::vector<std::pair<Node*, Array3>> mStepJump;  // nodes moved for a dynamic search, and by how much
+    std::vector<Dof*> mSymmetryMultipliers;            // fixed by ContactUtilities::FixSymmetryPlaneMultipliers
     Timings mTimings;
 };
 

@@ -2,10 +2,13 @@
 #include "custom_utilities/contact_utilities.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <unordered_map>
 
 #include "contact_app/application.h"
 #include "contact_app/kernel/exceptions.h"
+#include "contact_app/kernel/dof.h"
 #include "contact_app/kernel/model_part.h"
 
 namespace contact_app {
@@ -144,6 +147,63 @@ void ContactUtilities::ResetExplicitNodalValues(Node& node) {
     ZeroNodal(node, WEIGHTED_SLIP);
     node.SetValue(NODAL_AREA, 0.0);
     node.SetValue(AREA_WEIGHTED_PAIR_GAP, 0.0);
+}
+
+namespace {
+/// |n_c| / |n| below which a plane c = const counts as containing the interface normal: the mean normal of a node on a
+/// symmetry plane tilts by about half an element angle, h/(2R) (0.02 on the mirrored Hertz mesh).
+constexpr double kSymmetryPlaneNormalTolerance = 0.1;
+}  // namespace
+
+std::vector<Dof*> ContactUtilities::FixSymmetryPlaneMultipliers(ModelPart& computing, const std::vector<Dof*>& fixed) {
+    const Variable<double>* displacement[3] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
+    const Variable<double>* multiplier[3] = {&VECTOR_LAGRANGE_MULTIPLIER_X, &VECTOR_LAGRANGE_MULTIPLIER_Y,
+                                             &VECTOR_LAGRANGE_MULTIPLIER_Z};
+    for (Dof* dof : fixed) dof->FreeDof();
+    // Per slave node and component c: bit c of .first = some pair has master nodes on the node's plane c = X_c, all
+    // held in c; bit c of .second = some pair has such a master node that is free.
+    std::unordered_map<Node*, std::pair<unsigned, unsigned>> planes;
+    for (const auto& condition : computing.Conditions()) {
+        Geometry& geometry = condition->GetGeometry();
+        if (geometry.NumberOfGeometryParts() != 2) continue;
+        Geometry& slave = geometry.GetGeometryPart(0);
+        const Geometry& master = geometry.GetGeometryPart(1);
+        double extent = 0.0;
+        for (std::size_t l = 1; l < master.size(); ++l)
+            extent = std::max(extent, (master[l].InitialCoordinates() - master[0].InitialCoordinates()).norm());
+        const double tolerance = 1e-8 * extent;
+        for (std::size_t j = 0; j < slave.size(); ++j) {
+            Node& node = slave[j];
+            auto& [held, free] = planes[&node];
+            // Only stick rows constrain tangential components, and only a normal in the plane makes it a symmetry
+            // plane (a roller under a sloped interface carries the normal traction's c part).
+            if (!node.SolutionStepsDataHas(WEIGHTED_SLIP)) continue;
+            const Array3& normal = node.FastGetSolutionStepValue(NORMAL);
+            for (int c = 0; c < 3; ++c) {
+                if (!node.IsFixed(*displacement[c]) || !node.HasDofFor(*multiplier[c])) continue;
+                if (std::abs(normal[c]) > kSymmetryPlaneNormalTolerance * normal.norm()) continue;
+                for (std::size_t l = 0; l < master.size(); ++l) {
+                    if (std::abs(master[l].InitialCoordinates()[c] - node.InitialCoordinates()[c]) > tolerance) continue;
+                    if (master[l].IsFixed(*displacement[c]))
+                        held |= 1u << c;
+                    else
+                        free |= 1u << c;
+                }
+            }
+        }
+    }
+    std::vector<Dof*> result;
+    for (const auto& [node, plane] : planes) {
+        for (int c = 0; c < 3; ++c) {
+            if (!(plane.first & ~plane.second & (1u << c))) continue;
+            Dof& dof = node->GetDof(*multiplier[c]);
+            if (dof.IsFixed()) continue;  // fixed by the user
+            dof.FixDof();
+            node->FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER)[c] = 0.0;
+            result.push_back(&dof);
+        }
+    }
+    return result;
 }
 
 void ContactUtilities::ActivateConditionWithActiveNodes(ModelPart& model_part) {

@@ -6,6 +6,7 @@
 
 namespace contact_app {
 
+class Dof;
 class ModelPart;
 class Node;
 
@@ -56,6 +57,16 @@ public:
     /// @brief Before the pairs accumulate into @p node: WEIGHTED_GAP, WEIGHTED_SLIP (historical when stored, else
     ///        non-historical), NODAL_AREA and AREA_WEIGHTED_PAIR_GAP := 0.
     static void ResetExplicitNodalValues(Node& node);
+    /// @brief Fixes VECTOR_LAGRANGE_MULTIPLIER_c = 0 at the frictional slave nodes (WEIGHTED_SLIP stored) of
+    ///        @p computing's pairs that lie on a symmetry plane c = const through the interface: the node is held in
+    ///        DISPLACEMENT_c, its NORMAL lies in the plane (|n_c| ≤ 0.1 |n|), and the master nodes of its pairs on the
+    ///        same plane are all held too (at least one exists). By symmetry the contact traction has
+    ///        no c component there; left free, the stick rows of such nodes constrain (almost) only held DoFs and the
+    ///        solve returned multipliers 10^4 times too large (docs/theory/mortar.md §8). First frees the DoFs of
+    ///        @p fixed (the last call's result), so the set follows the pairs and the supports; DoFs the user fixed
+    ///        are left alone.
+    /// @return the DoFs fixed by this call
+    static std::vector<Dof*> FixSymmetryPlaneMultipliers(ModelPart& computing, const std::vector<Dof*>& fixed);
     /// @brief A pair condition is ACTIVE iff one of its slave (geometry part 0) nodes is ACTIVE; conditions without
     ///        geometry parts use their own nodes.
     static void ActivateConditionWithActiveNodes(ModelPart& model_part);

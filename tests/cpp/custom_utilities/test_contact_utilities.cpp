@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// ContactUtilities: nodal size statistics, activity checks, step jump, explicit refresh of the weighted gap.
+// ContactUtilities: nodal size statistics, activity checks, step jump, explicit refresh of the weighted gap,
+// multipliers held on symmetry planes.
 #include <gtest/gtest.h>
 
 #include "contact_app/application.h"
@@ -96,6 +97,52 @@ TEST(ContactUtilities, test_explicit_refresh_of_the_weighted_gap_of_a_pair) {
     EXPECT_FALSE(pair->Is(ACTIVE));
     ContactUtilities::CleanContactModelParts(part);
     EXPECT_EQ(part.NumberOfConditions(), 0u);
+}
+
+TEST(ContactUtilities, test_symmetry_plane_holds_the_tangential_multiplier) {
+    testing::ContactPairModel pair_model;
+    pair_model.part->AddNodalSolutionStepVariable(WEIGHTED_SLIP);  // a frictional interface
+    Eigen::MatrixXd s(2, 2), m(2, 2);
+    s << 0.0, 0.0, 1.0, 0.0;  // slave 1 at x = 0 (on the plane x = 0), slave 2 at x = 1
+    m << 1.2, 0.0, -0.2, 0.0;  // master 3 at x = 1.2, master 4 at x = -0.2: none on x = 0 yet
+    auto pair = pair_model.MakePair("ALMFrictionalMortarContactCondition2D2N", s, m);
+    ModelPart& part = *pair_model.part;
+    part.AddCondition(pair);
+    Node& slave = part.GetNode(1);
+    slave.FastGetSolutionStepValue(NORMAL) = Array3(0, 1, 0);
+    slave.Fix(DISPLACEMENT_X);
+    part.GetNode(4).Fix(DISPLACEMENT_X);
+    slave.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) = Array3(5, 6, 0);
+    // No master node on the slave's plane x = 0: the traction may push the masters, the multiplier stays free.
+    std::vector<Dof*> fixed = ContactUtilities::FixSymmetryPlaneMultipliers(part, {});
+    EXPECT_TRUE(fixed.empty());
+    // A held master node on the plane: a symmetry plane through the interface, no x traction there.
+    part.GetNode(4).InitialCoordinates()[0] = 0.0;
+    fixed = ContactUtilities::FixSymmetryPlaneMultipliers(part, fixed);
+    ASSERT_EQ(fixed.size(), 1u);
+    EXPECT_TRUE(slave.IsFixed(VECTOR_LAGRANGE_MULTIPLIER_X));
+    EXPECT_FALSE(slave.IsFixed(VECTOR_LAGRANGE_MULTIPLIER_Y));
+    EXPECT_EQ(slave.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER), Array3(0, 6, 0));
+    EXPECT_FALSE(part.GetNode(2).IsFixed(VECTOR_LAGRANGE_MULTIPLIER_X));  // not held itself
+    // A normal across the plane (a roller under a sloped interface): the traction has an x part, nothing is fixed.
+    slave.FastGetSolutionStepValue(NORMAL) = Array3(0.2, 1, 0).normalized();
+    EXPECT_TRUE(ContactUtilities::FixSymmetryPlaneMultipliers(part, fixed).empty());
+    EXPECT_FALSE(slave.IsFixed(VECTOR_LAGRANGE_MULTIPLIER_X));
+    slave.FastGetSolutionStepValue(NORMAL) = Array3(0, 1, 0);
+    fixed = ContactUtilities::FixSymmetryPlaneMultipliers(part, {});
+    ASSERT_EQ(fixed.size(), 1u);
+    // The master on the plane is released: the next call frees what the last one fixed.
+    part.GetNode(4).Free(DISPLACEMENT_X);
+    fixed = ContactUtilities::FixSymmetryPlaneMultipliers(part, fixed);
+    EXPECT_TRUE(fixed.empty());
+    EXPECT_FALSE(slave.IsFixed(VECTOR_LAGRANGE_MULTIPLIER_X));
+    // A multiplier the user fixed is neither reported nor freed.
+    part.GetNode(4).Fix(DISPLACEMENT_X);
+    slave.Fix(VECTOR_LAGRANGE_MULTIPLIER_X);
+    fixed = ContactUtilities::FixSymmetryPlaneMultipliers(part, fixed);
+    EXPECT_TRUE(fixed.empty());
+    fixed = ContactUtilities::FixSymmetryPlaneMultipliers(part, fixed);
+    EXPECT_TRUE(slave.IsFixed(VECTOR_LAGRANGE_MULTIPLIER_X));
 }
 
 }  // namespace

@@ -2,8 +2,8 @@
 
 Analytic values (Johnson, Contact Mechanics, 7.2): a = (3 P R / (4 E*))^(1/3),
 c/a = (1 - Q/(mu P))^(1/3). The fast tests check the mirrored mesh and the load couple; the
-run test checks the Coulomb law at every slipping node of every step, the friction force and
-the stick radius on the default level.
+run tests check the Coulomb law at every slipping node of every step, the Newton iterations, the
+friction force and the stick radius on levels 1 and 2 (slow).
 """
 
 from __future__ import annotations
@@ -66,19 +66,13 @@ def test_load_couple_cancels_the_moment_of_q() -> None:
     assert couple * moment == pytest.approx(1.5 * area * radius, rel=1e-12)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason=(
-        "the frictional ALM does not converge on this curved 3D interface: level 1 (a/h = 1.5, "
-        "tangent_factor 10) leaves 91 % of mu p0 of shear after the normal steps, steps 6 and 7 "
-        "stop at 30 iterations and a slip node's traction is 180 deg from its slip; with "
-        "tangent_factor 1 the normal steps already cycle (README)"
-    ),
-)
 def test_cattaneo_mindlin_3d_coarsest_mesh_obeys_coulomb(tmp_path: Path) -> None:
     _copy_inputs(tmp_path)
     result = _load("run_cattaneo_mindlin_3d").run(tmp_path, 1)
     assert result.converged, result.iterations
+    # Measured 5, 2, 3, 2, 2, 2, 3, 4 once the symmetry plane holds its tangential multipliers
+    # (before: 8 to 30 per step).
+    assert max(result.iterations) <= 6, result.iterations
     for step in result.steps:
         if step.slipping:
             assert step.max_slip_angle < ANGLE_TOLERANCE, step
@@ -87,3 +81,21 @@ def test_cattaneo_mindlin_3d_coarsest_mesh_obeys_coulomb(tmp_path: Path) -> None
     assert result.friction_force[0] == pytest.approx(result.tangential_load, rel=1e-3)
     assert result.zone.separated
     assert result.c_error < 0.2
+
+
+@pytest.mark.slow
+def test_cattaneo_mindlin_3d_default_level_stick_radius(tmp_path: Path) -> None:
+    """Level 2 (a/h = 2.9): stick radius from the set and from the deficit moment.
+
+    Measured: 4, 3, 3, 4, 4, 4, 4, 4 iterations, c/a 0.7956 from the deficit moment (+0.24 %),
+    0.760 from the stick set (h/2 = 0.1 mm), friction force -4.5e-4 against Q.
+    """
+    _copy_inputs(tmp_path)
+    result = _load("run_cattaneo_mindlin_3d").run(tmp_path, 2)
+    assert result.converged, result.iterations
+    assert max(result.iterations) <= 6, result.iterations
+    assert result.coulomb_slip_deviation < 1e-6
+    assert result.min_power > 0.0
+    assert result.tangential_force_error < 1e-3
+    assert result.c_deficit_error < 0.01
+    assert abs(result.zone.c - result.c_analytic) <= result.spacing / 2.0
