@@ -136,6 +136,8 @@ class AnalysisStage:
                 self.reporter.record_step(self._StepRecord(converged))
                 if not converged and (self.stop_on_non_convergence or self._gave_up):
                     self._StopOnNonConvergence()
+                if not converged:
+                    logger.warning("TIME = %.6g: the analysis goes on with this state", self.time)
                 self.FinalizeSolutionStep()
             with self.reporter.phase("output"):
                 self.OutputSolutionStep()

@@ -815,14 +815,17 @@ class MechanicalSolver:
         self._GetSolutionStrategy().Predict()
 
     def SolveSolutionStep(self) -> bool:
-        """Solve the step; warn with the last norms when Newton did not converge."""
+        """Solve the step; warn with the last norms when Newton did not converge.
+
+        What happens next (step cutting, stop, or going on) is the analysis stage's decision and
+        its message.
+        """
         strategy = self._GetSolutionStrategy()
         converged = bool(strategy.SolveSolutionStep())
         if not converged:
             info = self.main_model_part.ProcessInfo
             logger.warning(
-                "step %d (TIME = %.6g) did not converge in %d iterations; last norms: %s; "
-                "the analysis goes on with this state",
+                "step %d (TIME = %.6g) did not converge in %d iterations; last norms: %s",
                 info[ca.STEP],
                 info[ca.TIME],
                 strategy.GetIterationNumber(),
