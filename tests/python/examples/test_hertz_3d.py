@@ -192,10 +192,12 @@ def test_hertz_3d_converges_with_refinement(tmp_path: Path) -> None:
 
 @pytest.mark.slow
 def test_hertz_3d_with_friction_closes_from_an_open_gap(tmp_path: Path) -> None:
-    """Frictional ALM on the same model: identical bodies, so Hertz has no shear and the
-    frictional run must give the frictionless pressure. It once stopped at 30 iterations in every
-    step (a 3D curved surface closing with friction); the stick rows on the symmetry planes were
-    singular (docs/theory/mortar.md, symmetry planes)."""
+    """Frictional ALM on the level-2 model gives the frictionless pressure.
+
+    Identical bodies: Hertz has no shear. This run once stopped at 30 iterations in every step
+    (a 3D curved surface closing with friction); the stick rows on the symmetry planes were
+    singular (docs/theory/mortar.md, symmetry planes).
+    """
     module = _load("run_hertz_3d")
     frictionless_dir, frictional_dir = tmp_path / "frictionless", tmp_path / "frictional"
     results = []
@@ -205,14 +207,15 @@ def test_hertz_3d_with_friction_closes_from_an_open_gap(tmp_path: Path) -> None:
         if frictional:
             path = run_dir / "ProjectParameters.json"
             parameters = json.loads(path.read_text())
-            parameters["solver_settings"]["contact_settings"]["mortar_type"] = "ALMContactFrictional"
+            settings = parameters["solver_settings"]["contact_settings"]
+            settings["mortar_type"] = "ALMContactFrictional"
             contact = parameters["processes"]["contact_process_list"][0]["Parameters"]
             contact["contact_type"] = "Frictional"
             contact["friction_coefficients"] = {"0": 0.3}
             path.write_text(json.dumps(parameters, indent=1))
         results.append(module.run(run_dir, 2))
     frictionless, frictional = results
-    print(f"frictional Newton per step {frictional.iterations}, frictionless {frictionless.iterations}")
+    print(f"Newton per step: frictional {frictional.iterations}, {frictionless.iterations} without")
     assert frictional.converged
     assert max(frictional.iterations) <= 6  # measured 4, 3, 3, 2
     # Measured: a 0.585233 against 0.585631 (-0.07 %), p0 +0.14 %; analytic errors 0.49 / 0.98 %.
