@@ -38,6 +38,8 @@ MAX_QUOTE = 200
 # Strings (keys or values) and brackets; numbers and literals are skipped by the search.
 _TOKEN = re.compile(r'"(?:[^"\\]|\\.)*"|[\[\]{}]', re.DOTALL)
 _COLON = re.compile(r"\s*:")
+# Strings, punctuation and the literals between them (numbers, true, NaN, ...).
+_SCAN = re.compile(r'"(?:[^"\\]|\\.)*"|[\[\]{}:,]|[^\s\[\]{}:,"]+', re.DOTALL)
 _SURROGATE = re.compile(r"\\u[dD][89a-fA-F][0-9a-fA-F]{2}")
 #: Integers are ids, counts and orders: 64 bits, as in the C++ layer.
 _MAX_INT = 2**63 - 1
@@ -155,6 +157,41 @@ def _check_structure(text: str, source: str) -> None:
             keys[key] = line
 
 
+def _key_text(token: str) -> str:
+    try:
+        return str(json.loads(token))
+    except ValueError:
+        return token[1:-1]
+
+
+def _number_location(text: str, written: str, source: str) -> str:
+    """``file › key › [index] ›…, line n`` of the first number or literal written ``written``.
+
+    The parser reads in document order and stops at the first refused number, so the first
+    literal outside strings with that spelling is the one it refused.
+    """
+    # Each frame: ["{", last key] or ["[", element index].
+    frames: list[list[Any]] = []
+    for match in _SCAN.finditer(text):
+        token = match.group()
+        if token in "[{":
+            frames.append([token, None if token == "{" else 0])
+        elif token in "]}":
+            if frames:
+                frames.pop()
+        elif token == ",":
+            if frames and frames[-1][0] == "[":
+                frames[-1][1] += 1
+        elif token.startswith('"'):
+            if frames and frames[-1][0] == "{" and _COLON.match(text, match.end()):
+                frames[-1][1] = _key_text(token)
+        elif token == written:
+            path = [str(label) if kind == "{" else f"[{label}]" for kind, label in frames]
+            where = " › ".join(quote(part, 80) for part in [source, *path])
+            return f"{where}, line {_line(text, match.start())}"
+    return source
+
+
 def _finite_float(text: str) -> float:
     value = float(text)
     if not math.isfinite(value):
@@ -232,11 +269,9 @@ def loads(text: str, source: str) -> Any:
         ) from None
     except _NonFinite as error:
         written = quote(error.written, 40)
-        position = text.find(error.written)
-        line = f"line {_line(text, position)}" if position >= 0 else "the file"
         raise InputError(
             f"{source} holds the number {written}, which is not a finite double or 64-bit integer\n"
-            f"  where:    {line}\n"
+            f"  where:    {_number_location(text, error.written, source)}\n"
             "  expected: a finite number (JSON has no NaN or Infinity; doubles end near 1.8e308, "
             "integers at 64 bits)\n"
             "  fix:      write the intended finite value"

@@ -530,13 +530,30 @@ _MATERIAL = "plate_materials.json › properties › [0] › Material › Variab
 _CHECK = {"check_variables": ["DISPLACEMENT_X"]}
 
 UNTRUSTED_INPUTS: list[tuple[str, Callable[[Path], None], list[str]]] = [
-    ("nan_time_step", _stepping(time_step=float("nan")), ["number NaN", PARAMETERS, "line "]),
-    ("infinite_time_step", _stepping(time_step=float("inf")), ["number Infinity", "line "]),
-    ("overflowing_number", _text(PARAMETERS, '"time_step": 0.5', '"time_step": 1e999'), ["1e999"]),
+    (
+        "nan_time_step",
+        _stepping(time_step=float("nan")),
+        ["number NaN", f"{PARAMETERS} › solver_settings › time_stepping › time_step, line "],
+    ),
+    (
+        "infinite_time_step",
+        _stepping(time_step=float("inf")),
+        ["number Infinity", "time_stepping › time_step, line "],
+    ),
+    (
+        "overflowing_number",
+        _text(PARAMETERS, '"time_step": 0.5', '"time_step": 1e999'),
+        ["1e999", "solver_settings › time_stepping › time_step, line "],
+    ),
+    (
+        "nan_end_time",
+        _problem(end_time=float("nan")),
+        ["number NaN", f"{PARAMETERS} › problem_data › end_time, line "],
+    ),
     (
         "nan_in_time_step_table",
         _stepping(time_step_table=[[0.0, 0.1], [1.0, float("nan")]]),
-        ["number NaN", "line "],
+        ["number NaN", "time_stepping › time_step_table › [1] › [1], line "],
     ),
     (
         "time_not_finite",

@@ -17,8 +17,14 @@ def test_non_finite_numbers_are_refused_with_their_line(number: str) -> None:
     text = '{\n  "solver_settings": {\n    "time_step": ' + number + "\n  }\n}"
     with pytest.raises(ca.InputError, match="not a finite double") as failure:
         json_input.loads(text, "ProjectParameters.json")
-    assert "ProjectParameters.json" in str(failure.value)
-    assert "line 3" in str(failure.value)
+    assert "ProjectParameters.json › solver_settings › time_step, line 3" in str(failure.value)
+
+
+def test_non_finite_number_location_skips_strings_and_counts_array_elements() -> None:
+    text = '{"name": "NaN", "a\\"b": [1, {"NaN": 2, "c": [0, "x,y", NaN]}]}'
+    with pytest.raises(ca.InputError) as failure:
+        json_input.loads(text, "case.json")
+    assert 'case.json › a"b › [1] › c › [2], line 1' in str(failure.value)
 
 
 @pytest.mark.parametrize("digits", [30, 5000])
