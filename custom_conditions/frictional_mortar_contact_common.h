@@ -225,6 +225,9 @@ void AddFrictionalExplicitContribution(TCondition& condition, const ProcessInfo&
         share.slip.row(j) = TangentSlip<double, TDim, TNS, TNM>(state, slip, j).transpose();
         AddPairShareToNode(slave[j], share.area[j], share.gap[j]);
         slave[j].FastGetSolutionStepValue(WEIGHTED_SLIP).template head<TDim>() += share.slip.row(j).transpose();
+        Array3 weighted = slave[j].GetValue(AREA_WEIGHTED_PAIR_SLIP);
+        weighted.template head<TDim>() += share.area[j] * share.slip.row(j).transpose();
+        slave[j].SetValue(AREA_WEIGHTED_PAIR_SLIP, weighted);
     }
 }
 

@@ -54,9 +54,17 @@ struct NodalInterfaceMap {
     T TransmittedGap(int j, const T& pair_gap) const {
         return pair_gap + gap_offset[j];
     }
+    Eigen::Matrix<double, TNumNodes, TDim> transmitted_slip_offset =
+        Eigen::Matrix<double, TNumNodes, TDim>::Zero();  ///< T − ω s⁰
+
     template <class T>
     Eigen::Matrix<T, TDim, 1> Slip(int j, const Eigen::Matrix<T, TDim, 1>& pair_slip) const {
         return pair_slip / weight[j] + slip_offset.row(j).transpose().template cast<T>();
+    }
+    /// T̂_j(q) = T_j + ω_j (s_j(q) − s_j⁰): the slip the pairs' penalty stick rows transmit (Σ_c ω^c s^c).
+    template <class T>
+    Eigen::Matrix<T, TDim, 1> TransmittedSlip(int j, const Eigen::Matrix<T, TDim, 1>& pair_slip) const {
+        return pair_slip * weight[j] + transmitted_slip_offset.row(j).transpose().template cast<T>();
     }
 };
 
@@ -73,9 +81,13 @@ NodalInterfaceMap<TDim, TNumNodes> MakeNodalInterfaceMap(const Geometry& slave,
         if (!(share.area[j] > 0.0) || !(total_area >= share.area[j] * (1.0 - 1e-12))) continue;
         map.weight[j] = share.area[j] / total_area;
         map.gap_offset[j] = ContactUtilities::TransmittedWeightedGap(node) - share.gap[j];
-        if (frictional)
+        if (frictional) {
             map.slip_offset.row(j) = node.FastGetSolutionStepValue(WEIGHTED_SLIP).template head<TDim>().transpose() -
                                      share.slip.row(j) / map.weight[j];
+            map.transmitted_slip_offset.row(j) =
+                ContactUtilities::TransmittedWeightedSlip(node).template head<TDim>().transpose() -
+                share.slip.row(j) * map.weight[j];
+        }
     }
     return map;
 }

@@ -9,8 +9,9 @@ using namespace frictional_detail;
 /// RHS of kratos_residuals.md §3.5 with B2 fixed, q = [u2 (d·n_m), u1 (d·n_s)]: S_j[δ_j(ε_j g̃_j n_j + τ_j)] on the
 /// active nodes, nothing on the inactive ones. The tangential traction is a return map (docs/theory/mortar.md §8) on
 /// the elastic slip e_j = TANGENT_SLIP carried over from the previous steps plus the slip of the step: stick
-/// τ = κε(P e_j + s_j), slip τ = −μ ε g̃_j t_j along the nodal trial t = (P e + Ŝ)/|P e + Ŝ| (§7), so that every pair
-/// transmits |τ| = μ |ε g̃|.
+/// τ = κε(P e_j + s_j), slip τ = −μ ε g̃_j t_j along the nodal trial t = (P e + T̂)/|P e + T̂|, T̂ the transmitted slip
+/// Σ_c ω^c s^c (§7: what the stick rows of all pairs transmit, as Q for the normal), so that every pair transmits
+/// |τ| = μ |ε g̃|.
 template <class T, int TDim, int TNS, int TNM, class TState, class TVector>
 void AddPenaltyFrictionalResidual(const TState& s, const FrictionalParameters<TDim, TNS>& p,
                                   const SlipData<TDim, TNS, TNM>& slip, const NodalInterfaceMap<TDim, TNS>& nodal,
@@ -25,7 +26,7 @@ void AddPenaltyFrictionalResidual(const TState& s, const FrictionalParameters<TD
         const Vec pair_slip = TangentSlip<T, TDim, TNS, TNM>(s, slip, j);
         Vec force = n * (eps * gap);
         if (p.slip[j]) {  // Coulomb: |τ| = μ ε |g̃| along the nodal trial (ε g̃ < 0 in contact)
-            const Vec trial = (carried + nodal.Slip(j, pair_slip)) * (p.tangent_factor * eps);
+            const Vec trial = (carried + nodal.TransmittedSlip(j, pair_slip)) * (p.tangent_factor * eps);
             force += SlipDirection<T, TDim, TNS>(trial, p, j, std::abs(eps * Value(gap)) + 1e-300) *
                      (-p.mu[j] * eps * gap);
         } else {

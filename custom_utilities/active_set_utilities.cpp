@@ -146,9 +146,14 @@ Array3 TrialTangentialTraction(const Node& node, const ProcessInfo& process_info
     const double penalty = Penalty(node, process_info);
     const Array3 normal = node.FastGetSolutionStepValue(NORMAL);
     const auto tangential = [&normal](const Array3& v) { return Array3(v - normal.dot(v) * normal); };
-    Array3 slip = node.SolutionStepsDataHas(WEIGHTED_SLIP) ? node.FastGetSolutionStepValue(WEIGHTED_SLIP)
-                                                            : Array3(Array3::Zero());
-    if (!with_multiplier) slip += node.GetValue(TANGENT_SLIP);  // penalty: the elastic slip of earlier steps
+    // ALM: the nodal slip S its multiplier rows hold; penalty: the elastic slip of earlier steps plus the slip the
+    // pairs' stick rows transmit, T = Σ_c ω^c s^c (docs/theory/mortar.md §7; S ≈ 2T on a matching mesh).
+    Array3 slip = Array3::Zero();
+    if (with_multiplier) {
+        if (node.SolutionStepsDataHas(WEIGHTED_SLIP)) slip = node.FastGetSolutionStepValue(WEIGHTED_SLIP);
+    } else {
+        slip = ContactUtilities::TransmittedWeightedSlip(node) + node.GetValue(TANGENT_SLIP);
+    }
     Array3 trial = tangent_factor * penalty * tangential(slip);
     if (with_multiplier)
         trial += process_info.GetValue(SCALE_FACTOR) * tangential(node.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER));

@@ -43,6 +43,13 @@ double ContactUtilities::TransmittedWeightedGap(const Node& node) {
     return area > 0.0 ? node.GetValue(AREA_WEIGHTED_PAIR_GAP) / area : gap;
 }
 
+Array3 ContactUtilities::TransmittedWeightedSlip(const Node& node) {
+    const double area = node.GetValue(NODAL_AREA);
+    if (area > 0.0) return node.GetValue(AREA_WEIGHTED_PAIR_SLIP) / area;
+    return node.SolutionStepsDataHas(WEIGHTED_SLIP) ? node.FastGetSolutionStepValue(WEIGHTED_SLIP)
+                                                     : Array3(Array3::Zero());
+}
+
 double ContactUtilities::CalculateMaxNodalH(const ModelPart& model_part) {
     double result = 0.0;
     for (const auto& node : model_part.Nodes()) result = std::max(result, NodalH(*node));
@@ -147,6 +154,7 @@ void ContactUtilities::ResetExplicitNodalValues(Node& node) {
     ZeroNodal(node, WEIGHTED_SLIP);
     node.SetValue(NODAL_AREA, 0.0);
     node.SetValue(AREA_WEIGHTED_PAIR_GAP, 0.0);
+    node.SetValue(AREA_WEIGHTED_PAIR_SLIP, Array3(Array3::Zero()));
 }
 
 namespace {

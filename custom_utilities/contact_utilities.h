@@ -22,6 +22,9 @@ public:
     /// @brief Q = AREA_WEIGHTED_PAIR_GAP / NODAL_AREA, the weighted gap the pairs' augmentation transmits to a slave
     ///        node (docs/theory/mortar.md §7); WEIGHTED_GAP where the node has no area.
     static double TransmittedWeightedGap(const Node& node);
+    /// @brief T = AREA_WEIGHTED_PAIR_SLIP / NODAL_AREA, the weighted slip the pairs' penalty stick rows transmit to a
+    ///        slave node (docs/theory/mortar.md §7); WEIGHTED_SLIP where the node has no area.
+    static Array3 TransmittedWeightedSlip(const Node& node);
     /// @brief Largest NODAL_H of the nodes of @p model_part (0 for an empty part).
     static double CalculateMaxNodalH(const ModelPart& model_part);
     /// @brief Arithmetic mean of NODAL_H over the nodes of @p model_part (0 for an empty part).
