@@ -2,13 +2,24 @@
 #include "contact_app/io/mdpa_line_reader.h"
 
 #include <cctype>
+#include <filesystem>
 
+#include "contact_app/io/mdpa_values.h"
 #include "contact_app/kernel/exceptions.h"
 
 namespace contact_app {
 
-MdpaLineReader::MdpaLineReader(const std::string& file_name) : mFileName(file_name), mStream(file_name) {
-    CONTACT_CHECK(mStream.good(), InputError, "cannot open the mesh file \"", file_name, "\"",
+MdpaLineReader::MdpaLineReader(const std::string& file_name) : mFileName(file_name) {
+    // A folder opens and reads as empty; a device or FIFO is read forever: refuse both up front.
+    std::error_code error;
+    const auto status = std::filesystem::status(file_name, error);
+    CONTACT_CHECK(!std::filesystem::exists(status) || std::filesystem::is_regular_file(status), InputError,
+                  "the mesh file ", mdpa::Quoted(file_name), " is ",
+                  std::filesystem::is_directory(status) ? "a folder" : "not a regular file",
+                  "\n  expected: a file on disk (not a folder, device, FIFO or socket: /dev/zero would be read forever)",
+                  "\n  fix:      name the .mdpa file itself");
+    mStream.open(file_name, std::ios::binary);
+    CONTACT_CHECK(mStream.good(), InputError, "cannot open the mesh file ", mdpa::Quoted(file_name),
                   "\n  fix: check the path (model_import_settings.input_filename is given without the .mdpa extension)");
 }
 
@@ -17,13 +28,39 @@ std::string MdpaLineReader::Where() const { return mFileName + ":" + std::to_str
 bool MdpaLineReader::Next() {
     while (std::getline(mStream, mLine)) {
         ++mLineNumber;
+        CheckText();
+        mLineOffset += mLine.size() + 1;
         Tokenize(mLine);
         if (!mTokens.empty()) return true;
     }
+    CONTACT_CHECK(!mStream.bad(), InputError, "cannot read the mesh file ", mdpa::Quoted(mFileName), " after line ",
+                  mLineNumber, "\n  fix: check the file and the device it is on");
     return false;
 }
 
 namespace {
+
+/// Length of the UTF-8 sequence starting at text[i], or 0 if it is not a valid one.
+std::size_t Utf8SequenceLength(const std::string& text, std::size_t i) {
+    const auto byte = [&](std::size_t k) { return k < text.size() ? static_cast<unsigned char>(text[k]) : 0u; };
+    const unsigned lead = byte(i);
+    const auto continuation = [&](std::size_t k, unsigned low, unsigned high) {
+        return byte(k) >= low && byte(k) <= high;
+    };
+    if (lead >= 0xC2 && lead <= 0xDF) return continuation(i + 1, 0x80, 0xBF) ? 2 : 0;
+    if (lead >= 0xE0 && lead <= 0xEF) {
+        // E0 excludes overlong forms, ED the UTF-16 surrogates.
+        const unsigned low = lead == 0xE0 ? 0xA0 : 0x80, high = lead == 0xED ? 0x9F : 0xBF;
+        return continuation(i + 1, low, high) && continuation(i + 2, 0x80, 0xBF) ? 3 : 0;
+    }
+    if (lead >= 0xF0 && lead <= 0xF4) {
+        const unsigned low = lead == 0xF0 ? 0x90 : 0x80, high = lead == 0xF4 ? 0x8F : 0xBF;
+        return continuation(i + 1, low, high) && continuation(i + 2, 0x80, 0xBF) && continuation(i + 3, 0x80, 0xBF)
+                   ? 4
+                   : 0;
+    }
+    return 0;
+}
 
 /// Appends the balanced group starting at line[i] ('[' or '(') to @p token without whitespace;
 /// returns the index after it (or @p end if it is not closed on this line).
@@ -41,6 +78,27 @@ std::size_t TakeGroup(const std::string& line, std::size_t i, std::size_t end, s
 }
 
 }  // namespace
+
+void MdpaLineReader::CheckText() const {
+    for (std::size_t i = 0; i < mLine.size();) {
+        const auto c = static_cast<unsigned char>(mLine[i]);
+        if (c != 0 && c < 0x80) {
+            ++i;
+            continue;
+        }
+        const std::size_t length = c == 0 ? 0 : Utf8SequenceLength(mLine, i);
+        if (length > 0) {
+            i += length;
+            continue;
+        }
+        static constexpr const char* kHex = "0123456789abcdef";
+        const std::string hex{'0', 'x', kHex[c >> 4], kHex[c & 15]};
+        CONTACT_THROW(InputError, Where(), c == 0 ? "a NUL byte" : "byte " + hex, " at byte offset ", mLineOffset + i,
+                      " (column ", i + 1, ") ", c == 0 ? "is not text" : "is not UTF-8",
+                      "\n  expected: a UTF-8 (or ASCII) text file, names and comments included",
+                      "\n  fix:      save the mesh as UTF-8, or remove the stray bytes");
+    }
+}
 
 void MdpaLineReader::Tokenize(const std::string& line) {
     mTokens.clear();

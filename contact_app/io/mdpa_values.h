@@ -11,9 +11,17 @@ namespace contact_app::mdpa {
 // Parsers of the value spellings of `.mdpa` files. Each throws InputError with a message that
 // says what was expected; the reader prefixes it with the file and line.
 
+/// Largest id or count read: the signed 64-bit range, which the JSON layer and the outputs store.
+inline constexpr IndexType kMaxId = 9223372036854775807ULL;
+
+/// @p token between quotes for a message: at most 200 characters, control characters escaped.
+std::string Quoted(const std::string& token);
+
+/// A finite real number; nan, inf and values beyond the double range are refused as non-finite.
 double ParseDouble(const std::string& token, const char* what);
-/// A non-negative integer id (or count). @p what names the field in messages.
+/// A non-negative integer id (or count) of at most kMaxId. @p what names the field in messages.
 IndexType ParseId(const std::string& token, const char* what);
+/// An integer in the range of int.
 int ParseInt(const std::string& token, const char* what);
 /// 0/1/true/false.
 bool ParseBool(const std::string& token, const char* what);

@@ -34,7 +34,7 @@ public:
     void Parse() {
         while (mReader.Next()) {
             const auto& tokens = mReader.Tokens();
-            Expect(tokens[0] == "Begin" && tokens.size() >= 2, "expected \"Begin <Block>\", found \"", Joined(), "\"");
+            Expect(tokens[0] == "Begin" && tokens.size() >= 2, "expected \"Begin <Block>\", found ", Joined());
             const std::string kind = tokens[1];
             const std::vector<std::string> args(tokens.begin() + 2, tokens.end());
             const std::size_t begin_line = mReader.LineNumber();
@@ -53,7 +53,7 @@ public:
             else if (kind == "Mesh")
                 Fail("legacy \"Mesh\" blocks are not supported\n  fix: describe the subset as a SubModelPart block");
             else
-                Fail("unknown block \"Begin ", kind, "\"\n  expected: one of ", QuotedList(kTopLevelBlocks),
+                Fail("unknown block ", mdpa::Quoted("Begin " + kind), "\n  expected: one of ", QuotedList(kTopLevelBlocks),
                      DidYouMean(kind, kTopLevelBlocks));
             (void)begin_line;
         }
@@ -68,10 +68,11 @@ private:
     void Expect(bool condition, const TArgs&... message) const {
         if (!condition) Fail(message...);
     }
+    /// The current line's words, quoted briefly for a message.
     std::string Joined() const {
         std::string text;
         for (const auto& token : mReader.Tokens()) text += (text.empty() ? "" : " ") + token;
-        return text;
+        return mdpa::Quoted(text);
     }
     /// Runs @p action, prefixing any InputError it raises with the current file and line.
     template <class TAction>
@@ -102,7 +103,7 @@ private:
                              std::to_string(opened) + "\n  expected: \"End " + kind + "\"");
         const auto& tokens = mReader.Tokens();
         if (tokens[0] == "End") {
-            Expect(tokens.size() >= 2 && tokens[1] == kind, "expected \"End ", kind, "\", found \"", Joined(), "\"");
+            Expect(tokens.size() >= 2 && tokens[1] == kind, "expected \"End ", kind, "\", found ", Joined());
             return false;
         }
         return true;
@@ -120,7 +121,7 @@ private:
         while (NextBodyLine(block)) {
             const auto& tokens = mReader.Tokens();
             if (tokens[0] == "Begin") Fail("a \"Begin ", tokens.size() > 1 ? tokens[1] : "", "\" block cannot be nested in ", kind);
-            Expect(tokens.size() >= 2, "variable ", tokens[0], " has no value\n  expected: VARIABLE_NAME value");
+            Expect(tokens.size() >= 2, "variable ", mdpa::Quoted(tokens[0]), " has no value\n  expected: VARIABLE_NAME value");
             const VariableData& variable = LookupVariable(tokens[0]);
             std::string value = tokens[1];
             for (std::size_t i = 2; i < tokens.size(); ++i) value += " " + tokens[i];
@@ -131,7 +132,7 @@ private:
                 });
                 continue;
             }
-            Expect(variable.Type() == VariableType::String || tokens.size() == 2, "variable ", tokens[0],
+            Expect(variable.Type() == VariableType::String || tokens.size() == 2, "variable ", mdpa::Quoted(tokens[0]),
                    " expects one value, found ", tokens.size() - 1, " words");
             AtLine([&] { mdpa::SetParsedValue(data, variable, value); });
         }
@@ -154,13 +155,13 @@ private:
                 continue;
             }
             // Reuse the data reader for this single line.
-            Expect(tokens.size() >= 2, "variable ", tokens[0], " has no value\n  expected: VARIABLE_NAME value");
+            Expect(tokens.size() >= 2, "variable ", mdpa::Quoted(tokens[0]), " has no value\n  expected: VARIABLE_NAME value");
             const VariableData& variable = LookupVariable(tokens[0]);
             if (variable.Name() == CONSTITUTIVE_LAW.Name()) {
                 AtLine([&] { properties->SetValue(CONSTITUTIVE_LAW, Registry<ConstitutiveLaw>::Instance().Get(tokens[1]).Clone()); });
                 continue;
             }
-            Expect(variable.Type() == VariableType::String || tokens.size() == 2, "variable ", tokens[0],
+            Expect(variable.Type() == VariableType::String || tokens.size() == 2, "variable ", mdpa::Quoted(tokens[0]),
                    " expects one value, found ", tokens.size() - 1, " words");
             AtLine([&] { mdpa::SetParsedValue(properties->Data(), variable, tokens[1]); });
         }
@@ -197,12 +198,16 @@ private:
                 CONTACT_CHECK(id >= 1, InputError, "node id 0 is invalid\n  expected: ids start at 1");
                 const auto [position, inserted] = mNodeLines.emplace(id, mReader.LineNumber());
                 CONTACT_CHECK(inserted, InputError, "node ", id, " is defined twice (first at line ", position->second, ")");
-                nodes.push_back(std::make_shared<Node>(id, mdpa::ParseDouble(tokens[1], "x coordinate"),
-                                                       mdpa::ParseDouble(tokens[2], "y coordinate"),
-                                                       mdpa::ParseDouble(tokens[3], "z coordinate")));
+                nodes.push_back(std::make_shared<Node>(id, mdpa::ParseDouble(tokens[1], "coordinate x"),
+                                                       mdpa::ParseDouble(tokens[2], "coordinate y"),
+                                                       mdpa::ParseDouble(tokens[3], "coordinate z")));
             });
         }
         mRoot.AddNodesBulk(std::move(nodes));
+    }
+
+    static void CheckNotZero(IndexType id, const char* what) {
+        CONTACT_CHECK(id >= 1, InputError, what, " id 0 is invalid\n  expected: ids start at 1");
     }
 
     std::vector<Node::Pointer> NodesOf(std::size_t first, const char* what, IndexType id) const {
@@ -225,6 +230,7 @@ private:
         while (NextBodyLine(block)) {
             AtLine([&] {
                 const IndexType id = mdpa::ParseId(mReader.Tokens()[0], "geometry id");
+                CheckNotZero(id, "geometry");
                 CONTACT_CHECK(!mRoot.HasGeometry(id), InputError, "geometry ", id, " is defined twice");
                 mRoot.AddGeometry(id, CreateGeometry(name, NodesOf(1, "geometry", id)));
             });
@@ -244,6 +250,7 @@ private:
             const auto& tokens = mReader.Tokens();
             AtLine([&] {
                 const IndexType id = mdpa::ParseId(tokens[0], (std::string(what) + " id").c_str());
+                CheckNotZero(id, what);
                 CONTACT_CHECK(tokens.size() == nodes_needed + 2, InputError, what, " ", id, " (", args[0], ") needs ",
                               nodes_needed, " node ids after its id and property id, found ",
                               tokens.size() < 2 ? 0 : tokens.size() - 2);
@@ -391,7 +398,7 @@ private:
         while (NextBodyLine(block)) {
             const auto& tokens = mReader.Tokens();
             Expect(tokens[0] == "Begin" && tokens.size() >= 2, "expected a \"Begin SubModelPart...\" block inside SubModelPart ",
-                   args[0], ", found \"", Joined(), "\"");
+                   args[0], ", found ", Joined());
             const std::string kind = tokens[1];
             const std::vector<std::string> nested(tokens.begin() + 2, tokens.end());
             if (kind == "SubModelPart") {
@@ -403,7 +410,7 @@ private:
                 continue;
             }
             Expect(std::find(kSubModelPartBlocks.begin(), kSubModelPartBlocks.end(), kind) != kSubModelPartBlocks.end(),
-                   "unknown block \"Begin ", kind, "\" inside SubModelPart ", args[0], "\n  expected: one of ",
+                   "unknown block ", mdpa::Quoted("Begin " + kind), " inside SubModelPart ", args[0], "\n  expected: one of ",
                    QuotedList(kSubModelPartBlocks), DidYouMean(kind, kSubModelPartBlocks));
             const auto ids = ReadIdList(kind);
             AtLine([&] {

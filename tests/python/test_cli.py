@@ -644,6 +644,28 @@ UNTRUSTED_INPUTS: list[tuple[str, Callable[[Path], None], list[str]]] = [
         ['plate.mdpa" defines no nodes: it is empty or unreadable', "input_filename"],
     ),
     (
+        "nan_coordinate_in_the_mesh",
+        _text("plate.mdpa", "    2 0.500000 0.000000", "    2 nan 0.000000"),
+        ['plate.mdpa:10: non-finite coordinate x "nan"'],
+    ),
+    (
+        "node_id_beyond_64_bits_in_the_mesh",
+        _text("plate.mdpa", "    1 0.000000", "    99999999999999999999 0.000000"),
+        ['plate.mdpa:9: node id "99999999999999999999" is beyond the largest id'],
+    ),
+    (
+        "infinite_property_in_the_mesh",
+        _text("plate.mdpa", "Begin Properties 0\n", "Begin Properties 0\n    DENSITY inf\n"),
+        ['plate.mdpa:6: non-finite real value "inf"'],
+    ),
+    (
+        "non_utf8_sub_model_part_name_in_the_mesh",
+        lambda case: (case / "plate.mdpa").write_bytes(
+            (case / "plate.mdpa").read_bytes().replace(b"Parts_plate", b"Parts_pl\xe4te", 1)
+        ),
+        ["plate.mdpa:42: byte 0xe4 at byte offset", "(column 28) is not UTF-8"],
+    ),
+    (
         "mesh_is_a_folder",
         lambda case: (
             (case / "folder.mdpa").mkdir()

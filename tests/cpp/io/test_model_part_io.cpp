@@ -5,6 +5,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include "contact_app/application.h"
 #include "contact_app/io/model_part_io.h"
@@ -226,7 +227,7 @@ INSTANTIATE_TEST_SUITE_P(
         MalformedCase{"missing_end", "Begin Nodes\n 1 0 0 0\n", 2, "ends inside the \"Nodes\" block opened at line 1"},
         MalformedCase{"wrong_end", "Begin Nodes\n 1 0 0 0\nEnd Elements\n", 3, "expected \"End Nodes\""},
         MalformedCase{"short_node_line", "Begin Nodes\n 1 0 0\nEnd Nodes\n", 2, "needs 4 values (id x y z), found 3"},
-        MalformedCase{"bad_coordinate", "Begin Nodes\n 1 0 zero 0\nEnd Nodes\n", 2, "\"zero\" is not a valid y coordinate"},
+        MalformedCase{"bad_coordinate", "Begin Nodes\n 1 0 zero 0\nEnd Nodes\n", 2, "\"zero\" is not a valid coordinate y"},
         MalformedCase{"negative_node_id", "Begin Nodes\n -1 0 0 0\nEnd Nodes\n", 2, "not a valid node id"},
         MalformedCase{"duplicate_node", "Begin Nodes\n 1 0 0 0\n 1 1 0 0\nEnd Nodes\n", 3,
                       "node 1 is defined twice (first at line 2)"},
@@ -253,6 +254,144 @@ INSTANTIATE_TEST_SUITE_P(
                       12, "element 1 is defined twice"},
         MalformedCase{"table_row", "Begin Table 1 TIME PRESSURE\n 0.0\nEnd Table\n", 2, "needs two numbers"}),
     [](const ::testing::TestParamInfo<MalformedCase>& info) { return std::string(info.param.name); });
+
+const std::string kLine = kNodes + "Begin Conditions LineCondition2D2N\n";  // condition rows from line 8
+
+// Numbers that are not finite, ids beyond what is stored, ids of 0, truncated lines, absurd sizes and
+// bytes that are not text: each a file:line error (issue 16).
+INSTANTIATE_TEST_SUITE_P(
+    Untrusted, MalformedMdpaTest,
+    ::testing::Values(
+        MalformedCase{"nan_coordinate", "Begin Nodes\n 1 0 0 0\n 2 nan 0 0\nEnd Nodes\n", 3, "non-finite coordinate x \"nan\""},
+        MalformedCase{"inf_coordinate", "Begin Nodes\n 1 0 0 -inf\nEnd Nodes\n", 2, "non-finite coordinate z \"-inf\""},
+        MalformedCase{"overflowing_coordinate", "Begin Nodes\n 1 0 1e999 0\nEnd Nodes\n", 2,
+                      "non-finite coordinate y \"1e999\""},
+        MalformedCase{"node_id_beyond_64_bits", "Begin Nodes\n 99999999999999999999999 0 0 0\n 99999999999999999999998 1 0 0\nEnd Nodes\n",
+                      2, "node id \"99999999999999999999999\" is beyond the largest id 9223372036854775807"},
+        MalformedCase{"node_id_beyond_int64", "Begin Nodes\n 9223372036854775808 0 0 0\nEnd Nodes\n", 2,
+                      "is beyond the largest id"},
+        MalformedCase{"element_id_beyond_64_bits", kNodes + "Begin Elements Element2D4N\n 18446744073709551616 0 1 2 3 4\nEnd Elements\n",
+                      8, "element id \"18446744073709551616\" is beyond"},
+        MalformedCase{"condition_node_id_beyond_64_bits", kLine + " 1 0 1 99999999999999999999\nEnd Conditions\n", 8,
+                      "node id \"99999999999999999999\" is beyond"},
+        MalformedCase{"property_id_beyond_64_bits", "Begin Properties 123456789012345678901234567890\nEnd Properties\n", 1,
+                      "property id \"123456789012345678901234567890\" is beyond"},
+        MalformedCase{"table_id_beyond_64_bits", "Begin Table 99999999999999999999 TIME PRESSURE\nEnd Table\n", 1,
+                      "table id \"99999999999999999999\" is beyond"},
+        MalformedCase{"constraint_id_beyond_64_bits",
+                      kNodes + "Begin Constraints LinearMasterSlaveConstraint DISPLACEMENT_X\n 99999999999999999999 0.0 [1.0] 1 2\nEnd Constraints\n",
+                      8, "constraint id \"99999999999999999999\" is beyond"},
+        MalformedCase{"sub_model_part_id_beyond_64_bits",
+                      kNodes + "Begin SubModelPart A\n Begin SubModelPartNodes\n 1 99999999999999999999\n End SubModelPartNodes\nEnd SubModelPart\n",
+                      9, "is beyond the largest id"},
+        MalformedCase{"element_id_zero", kNodes + "Begin Elements Element2D4N\n 0 0 1 2 3 4\nEnd Elements\n", 8, "element id 0 is invalid"},
+        MalformedCase{"condition_id_zero", kLine + " 0 0 1 2\nEnd Conditions\n", 8, "condition id 0 is invalid"},
+        MalformedCase{"geometry_id_zero", kNodes + "Begin Geometries Triangle2D3\n 0 1 2 3\nEnd Geometries\n", 8, "geometry id 0 is invalid"},
+        MalformedCase{"constraint_id_zero",
+                      kNodes + "Begin Constraints LinearMasterSlaveConstraint DISPLACEMENT_X\n 0 0.0 [1.0] 1 2\nEnd Constraints\n",
+                      8, "constraint id 0"},
+        MalformedCase{"negative_element_id", kNodes + "Begin Elements Element2D4N\n -3 0 1 2 3 4\nEnd Elements\n", 8,
+                      "\"-3\" is not a valid element id"},
+        MalformedCase{"negative_node_in_condition", kLine + " 1 0 1 -2\nEnd Conditions\n", 8, "\"-2\" is not a valid node id"},
+        MalformedCase{"nan_nodal_data", kNodes + "Begin NodalData DISPLACEMENT_X\n 2 1 nan\nEnd NodalData\n", 8,
+                      "non-finite nodal value \"nan\""},
+        MalformedCase{"inf_nodal_vector", kNodes + "Begin NodalData DISPLACEMENT\n 2 0 [3](0,inf,0)\nEnd NodalData\n", 8,
+                      "non-finite vector component \"inf\""},
+        MalformedCase{"nan_elemental_data",
+                      kNodes + "Begin Elements Element2D4N\n 1 0 1 2 3 4\nEnd Elements\nBegin ElementalData THICKNESS\n 1 NaN\nEnd ElementalData\n",
+                      11, "non-finite real value \"NaN\""},
+        MalformedCase{"inf_conditional_data", kLine + " 1 0 1 2\nEnd Conditions\nBegin ConditionalData PRESSURE\n 1 infinity\nEnd ConditionalData\n",
+                      11, "non-finite real value \"infinity\""},
+        MalformedCase{"nan_property", "Begin Properties 1\n YOUNG_MODULUS 2e5\n POISSON_RATIO nan\nEnd Properties\n", 3,
+                      "non-finite real value \"nan\""},
+        MalformedCase{"overflowing_property", "Begin Properties 1\n DENSITY -1e400\nEnd Properties\n", 2, "non-finite real value \"-1e400\""},
+        MalformedCase{"nan_model_part_data", "Begin ModelPartData\n TIME nan\nEnd ModelPartData\n", 2, "non-finite real value"},
+        MalformedCase{"nan_property_table", "Begin Properties 1\n Begin Table TEMPERATURE YOUNG_MODULUS\n 0 1\n nan 2\n End Table\nEnd Properties\n",
+                      4, "non-finite table x \"nan\""},
+        MalformedCase{"inf_table", "Begin Table 1 TIME PRESSURE\n 0.0 0.0\n 1.0 inf\nEnd Table\n", 3, "non-finite table y \"inf\""},
+        MalformedCase{"nan_constraint_constant",
+                      kNodes + "Begin Constraints LinearMasterSlaveConstraint DISPLACEMENT_X\n 1 nan [1.0] 1 2\nEnd Constraints\n",
+                      8, "non-finite constraint constant \"nan\""},
+        MalformedCase{"inf_constraint_weight",
+                      kNodes + "Begin Constraints LinearMasterSlaveConstraint DISPLACEMENT_X\n 1 0 [0.5, inf] 1 2 3\nEnd Constraints\n",
+                      8, "non-finite vector component \"inf\""},
+        MalformedCase{"nan_matrix_entry", "Begin Properties 1\n CONSTITUTIVE_MATRIX [2,2]((1,0),(0,nan))\nEnd Properties\n", 2,
+                      "non-finite matrix entry \"nan\""},
+        MalformedCase{"absurd_matrix_columns", "Begin Properties 1\n CONSTITUTIVE_MATRIX [1,999999999999]((1))\nEnd Properties\n", 2,
+                      "has 1 entries, expected 999999999999"},
+        MalformedCase{"absurd_vector_size", "Begin Properties 1\n INITIAL_STRAIN_VECTOR [99999999999999999999](1,2)\nEnd Properties\n", 2,
+                      "vector size \"99999999999999999999\" is beyond"},
+        MalformedCase{"integer_beyond_int", "Begin Properties 1\n DOMAIN_SIZE -99999999999\nEnd Properties\n", 2,
+                      "integer value \"-99999999999\" is beyond the range of an integer"},
+        MalformedCase{"truncated_element", kNodes + "Begin Elements Element2D4N\n 1\nEnd Elements\n", 8,
+                      "needs 4 node ids after its id and property id, found 0"},
+        MalformedCase{"truncated_constraint",
+                      kNodes + "Begin Constraints LinearMasterSlaveConstraint DISPLACEMENT_X\n 1 0.0 [1.0]\nEnd Constraints\n", 8,
+                      "a constraint line needs"},
+        MalformedCase{"truncated_nodal_data", kNodes + "Begin NodalData DISPLACEMENT_X\n 2\nEnd NodalData\n", 8,
+                      "needs: node_id is_fixed value, found 1 words"},
+        MalformedCase{"truncated_elemental_data",
+                      kNodes + "Begin Elements Element2D4N\n 1 0 1 2 3 4\nEnd Elements\nBegin ElementalData THICKNESS\n 1\nEnd ElementalData\n",
+                      11, "needs: id value, found 1 words"},
+        MalformedCase{"truncated_property", "Begin Properties 1\n YOUNG_MODULUS\nEnd Properties\n", 2, "has no value"},
+        MalformedCase{"truncated_begin", "Begin\n", 1, "expected \"Begin <Block>\""},
+        MalformedCase{"truncated_end", "Begin Nodes\n 1 0 0 0\nEnd\n", 3, "expected \"End Nodes\""},
+        MalformedCase{"truncated_properties_header", "Begin Properties\nEnd Properties\n", 1, "needs one property id"},
+        MalformedCase{"truncated_table_header", "Begin Table 1 TIME\nEnd Table\n", 1, "needs <id> <input_variable> <output_variable>"},
+        MalformedCase{"file_ends_in_sub_model_part", "Begin SubModelPart A\n Begin SubModelPartNodes\n", 2,
+                      "ends inside the \"SubModelPartNodes\" block"},
+        MalformedCase{"non_utf8_sub_model_part_name", "Begin SubModelPart Contact\xff\xfe\nEnd SubModelPart\n", 1,
+                      "byte 0xff at byte offset 26 (column 27) is not UTF-8"},
+        MalformedCase{"non_utf8_in_a_comment", "// mesh\nBegin Nodes // caf\xe9\nEnd Nodes\n", 2,
+                      "byte 0xe9 at byte offset 26 (column 19) is not UTF-8"},
+        MalformedCase{"utf16_surrogate_bytes", "Begin Nodes // \xed\xa0\x80\nEnd Nodes\n", 1, "byte 0xed at byte offset 15"},
+        MalformedCase{"overlong_utf8", "Begin Nodes // \xc0\xaf\nEnd Nodes\n", 1, "byte 0xc0 at byte offset 15"},
+        MalformedCase{"nul_byte", std::string("Begin Nodes\n 1 0 0") + '\0' + " 0\nEnd Nodes\n", 2,
+                      "a NUL byte at byte offset 18 (column 7) is not text"},
+        MalformedCase{"huge_token_quoted_briefly", "Begin Nodes\n " + std::string(20000, '7') + "x 0 0 0\nEnd Nodes\n", 2,
+                      "… (20001 characters)\" is not a valid node id"}),
+    [](const ::testing::TestParamInfo<MalformedCase>& info) { return std::string(info.param.name); });
+
+TEST(ModelPartIO, UnderflowingValuesReadAsZeroAndUtf8NamesAreKept) {
+    RegisterContactApplication();
+    Model model;
+    ModelPart& part = NewStructure(model);
+    ModelPartIO(WriteMdpa("underflow", "Begin Nodes // noeud déplacé\n 1 1e-400 0 0\nEnd Nodes\n"
+                                       "Begin SubModelPart Contacto_ñ\nEnd SubModelPart\n"))
+        .ReadModelPart(part);
+    EXPECT_EQ(part.GetNode(1).X(), 0.0);
+    EXPECT_TRUE(part.HasSubModelPart("Contacto_ñ"));
+}
+
+/// The message of the InputError that reading @p path raises ("" if none).
+std::string ReadError(const std::string& path) {
+    Model model;
+    ModelPart& part = model.CreateModelPart("Structure");
+    try {
+        ModelPartIO(path).ReadModelPart(part);
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    return "";
+}
+
+TEST(ModelPartIO, FolderDeviceAndFifoAreRefusedWithoutReading) {
+    const auto folder = std::filesystem::temp_directory_path() / "contact_app_test_folder.mdpa";
+    std::filesystem::create_directories(folder);
+    EXPECT_NE(ReadError(folder.string()).find("contact_app_test_folder.mdpa\" is a folder"), std::string::npos);
+    EXPECT_NE(ReadError("/dev/zero").find("cannot open the mesh file \"/dev/zero.mdpa\""), std::string::npos);
+    const auto device = std::filesystem::temp_directory_path() / "contact_app_test_device.mdpa";
+    std::filesystem::remove(device);
+    std::filesystem::create_symlink("/dev/zero", device);  // would be read forever
+    EXPECT_NE(ReadError(device.string()).find("contact_app_test_device.mdpa\" is not a regular file"), std::string::npos);
+    std::filesystem::remove(device);
+    const auto fifo = std::filesystem::temp_directory_path() / "contact_app_test_fifo.mdpa";
+    std::filesystem::remove(fifo);
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    // Opening a FIFO for reading would wait for a writer: the check must come first.
+    EXPECT_NE(ReadError(fifo.string()).find("is not a regular file"), std::string::npos);
+    std::filesystem::remove(fifo);
+}
 
 TEST(ModelPartIO, MissingFileNamesThePath) {
     Model model;
