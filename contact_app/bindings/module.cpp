@@ -4,6 +4,7 @@
 #include "contact_app/application.h"
 #include "custom_conditions/contact_condition_registration.h"
 #include "custom_strategies/contact_master_slave_constraint.h"
+#include "custom_utilities/contact_restart_codecs.h"
 #include "contact_app/bindings/bindings.h"
 #include "contact_app/kernel/exceptions.h"
 
@@ -41,6 +42,7 @@ PYBIND11_MODULE(_core, m) {
     contact_app::RegisterContactApplication();
     contact_app::RegisterContactConditions();  // not in RegisterContactApplication: avoids a library cycle
     contact_app::RegisterContactMasterSlaveConstraints();
+    contact_app::RegisterContactRestartCodecs();
     BindExceptions(m);
     BindVariables(m);
     BindFlags(m);
