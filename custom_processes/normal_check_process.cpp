@@ -8,6 +8,7 @@
 
 #include "contact_app/application.h"
 #include "contact_app/kernel/exceptions.h"
+#include "contact_app/kernel/face_checks.h"
 #include "contact_app/kernel/model_part.h"
 
 namespace contact_app {
@@ -79,7 +80,7 @@ void NormalCheckProcess::Execute() {
         Array3 local_center = Array3::Zero();
         for (int j = 0; j < local_nodes.cols(); ++j) local_center[j] = local_nodes.col(j).mean();
         const double size = geometry.LocalSpaceDimension() == 1 ? geometry.Length() : std::sqrt(geometry.Area());
-        const Array3 probe = geometry.Center() + mLengthProportion * size * geometry.UnitNormal(local_center);
+        const Array3 probe = geometry.Center() + mLengthProportion * size * ConditionUnitNormal(*condition, mrModelPart, local_center);
         Array3 local;
         if (parent->GetGeometry().IsInside(probe, local, mCheckThreshold)) inverted.push_back(condition);
     }

@@ -2,6 +2,7 @@
 #include "custom_utilities/mortar_normals.h"
 
 #include "contact_app/kernel/exceptions.h"
+#include "contact_app/kernel/face_checks.h"
 #include "contact_app/kernel/model_part.h"
 #include "contact_app/kernel/variables.h"
 #include "custom_utilities/mortar_geometry_math.h"
@@ -22,11 +23,11 @@ void ComputeNodesMeanNormalModelPart(ModelPart& model_part, bool compute_conditi
         Array3 center = Array3::Zero();
         for (Eigen::Index k = 0; k < local_nodes.rows(); ++k) center.head(local_nodes.cols()) += local_nodes.row(k).transpose();
         center /= static_cast<double>(local_nodes.rows());
-        if (compute_conditions) condition->SetValue(NORMAL, geometry.UnitNormal(center));
+        if (compute_conditions) condition->SetValue(NORMAL, ConditionUnitNormal(*condition, model_part, center));
         for (std::size_t k = 0; k < geometry.size(); ++k) {
             Array3 local = Array3::Zero();
             local.head(local_nodes.cols()) = local_nodes.row(static_cast<Eigen::Index>(k)).transpose();
-            geometry[k].FastGetSolutionStepValue(NORMAL) += geometry.UnitNormal(local);
+            geometry[k].FastGetSolutionStepValue(NORMAL) += ConditionUnitNormal(*condition, model_part, local);
         }
     }
     for (const auto& node : model_part.Nodes()) {

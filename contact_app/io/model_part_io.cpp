@@ -2,12 +2,14 @@
 #include "contact_app/io/model_part_io.h"
 
 #include <fstream>
+#include <type_traits>
 #include <unordered_map>
 
 #include "contact_app/io/mdpa_line_reader.h"
 #include "contact_app/io/mdpa_values.h"
 #include "contact_app/kernel/constitutive_law.h"
 #include "contact_app/kernel/exceptions.h"
+#include "contact_app/kernel/face_checks.h"
 #include "contact_app/kernel/geometries/geometry_factory.h"
 #include "contact_app/kernel/registry.h"
 #include "contact_app/kernel/string_utilities.h"
@@ -56,6 +58,14 @@ public:
                 Fail("unknown block ", mdpa::Quoted("Begin " + kind), "\n  expected: one of ", QuotedList(kTopLevelBlocks),
                      DidYouMean(kind, kTopLevelBlocks));
             (void)begin_line;
+        }
+        if (mDegenerate.condition) {
+            const std::size_t more = mDegenerateCount - 1;
+            const std::string others = more == 0   ? ""
+                                       : more == 1 ? " (1 more condition of the mesh is degenerate)"
+                                                   : " (" + std::to_string(more) + " more conditions of the mesh are degenerate)";
+            ThrowDegenerateFace(*mDegenerate.condition, mRoot, mDegenerate.reason + others,
+                                mReader.FileName() + ":" + std::to_string(mDegenerate.line) + ": ");
         }
     }
 
@@ -256,6 +266,7 @@ private:
                               tokens.size() < 2 ? 0 : tokens.size() - 2);
                 const IndexType property_id = mdpa::ParseId(tokens[1], "property id");
                 entities.push_back(prototype->Create(id, NodesOf(2, what, id), mRoot.pGetProperties(property_id)));
+                if constexpr (std::is_same_v<TEntity, Condition>) RecordIfDegenerate(entities.back());
             });
         }
         AtLine([&] { AddBulk(std::move(entities)); });
@@ -269,6 +280,13 @@ private:
         for (const auto& condition : conditions)
             CONTACT_CHECK(!mRoot.HasCondition(condition->Id()), InputError, "condition ", condition->Id(), " is defined twice");
         mRoot.AddConditionsBulk(std::move(conditions));
+    }
+    /// Degenerate faces are reported after the whole file is read, when the model parts that hold
+    /// them are known; the first one is kept with its line.
+    void RecordIfDegenerate(const Condition::Pointer& condition) {
+        std::string reason = DegenerateFaceReason(condition->GetGeometry());
+        if (reason.empty()) return;
+        if (mDegenerateCount++ == 0) mDegenerate = {condition, mReader.LineNumber(), std::move(reason)};
     }
     void ReadElements(const std::vector<std::string>& args) { ReadEntities<Element>(args, "Elements", "element"); }
     void ReadConditions(const std::vector<std::string>& args) { ReadEntities<Condition>(args, "Conditions", "condition"); }
@@ -430,6 +448,13 @@ private:
     MdpaLineReader mReader;
     ModelPart& mRoot;
     std::unordered_map<IndexType, std::size_t> mNodeLines;
+    struct DegenerateFace {
+        Condition::Pointer condition;
+        std::size_t line = 0;
+        std::string reason;
+    };
+    DegenerateFace mDegenerate;
+    std::size_t mDegenerateCount = 0;
 };
 
 }  // namespace

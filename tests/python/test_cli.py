@@ -666,6 +666,14 @@ UNTRUSTED_INPUTS: list[tuple[str, Callable[[Path], None], list[str]]] = [
         ["plate.mdpa:42: byte 0xe4 at byte offset", "(column 28) is not UTF-8"],
     ),
     (
+        "degenerate_face_in_the_mesh",
+        _text("plate.mdpa", "    1 0 5 10\n", "    1 0 5 5\n"),
+        [
+            "plate.mdpa:38: condition 1 (Line2D2 with nodes [5, 5]) of model part "
+            '"Structure.LineLoad2D_right" is a degenerate face, zero length: node 5 is listed twice'
+        ],
+    ),
+    (
         "mesh_is_a_folder",
         lambda case: (
             (case / "folder.mdpa").mkdir()

@@ -348,9 +348,34 @@ INSTANTIATE_TEST_SUITE_P(
         MalformedCase{"overlong_utf8", "Begin Nodes // \xc0\xaf\nEnd Nodes\n", 1, "byte 0xc0 at byte offset 15"},
         MalformedCase{"nul_byte", std::string("Begin Nodes\n 1 0 0") + '\0' + " 0\nEnd Nodes\n", 2,
                       "a NUL byte at byte offset 18 (column 7) is not text"},
+        MalformedCase{"degenerate_contact_line",
+                      kLine + " 1 0 1 2\n 2 0 3 3\nEnd Conditions\nBegin SubModelPart Contact_Part\n Begin SubModelPartConditions\n"
+                              "  1 2\n End SubModelPartConditions\nEnd SubModelPart\n",
+                      9,
+                      "condition 2 (Line2D2 with nodes [3, 3]) of model part \"Structure.Contact_Part\" is a degenerate face, "
+                      "zero length: node 3 is listed twice\n  expected: a line of non-zero length"},
+        MalformedCase{"coincident_nodes_of_a_line",
+                      kNodes + "Begin Nodes\n 5 1 1 0\nEnd Nodes\nBegin Conditions LineCondition2D2N\n 4 0 3 5\nEnd Conditions\n", 11,
+                      "condition 4 (Line2D2 with nodes [3, 5]) of model part \"Structure\" is a degenerate face, zero length: "
+                      "nodes 3 and 5 are at the same point"},
+        MalformedCase{"collinear_triangle",
+                      "Begin Nodes\n 1 0 0 0\n 2 1 0 0\n 3 2 0 0\nEnd Nodes\nBegin Conditions SurfaceCondition3D3N\n 1 0 1 2 3\n"
+                      " 2 0 3 2 1\nEnd Conditions\n",
+                      7, "condition 1 (Triangle3D3 with nodes [1, 2, 3]) of model part \"Structure\" is a degenerate face, zero "
+                         "area: its corners are collinear (1 more condition of the mesh is degenerate)"},
         MalformedCase{"huge_token_quoted_briefly", "Begin Nodes\n " + std::string(20000, '7') + "x 0 0 0\nEnd Nodes\n", 2,
                       "… (20001 characters)\" is not a valid node id"}),
     [](const ::testing::TestParamInfo<MalformedCase>& info) { return std::string(info.param.name); });
+
+TEST(ModelPartIO, CollapsedQuadrilateralFaceIsRead) {
+    RegisterContactApplication();
+    Model model;
+    ModelPart& part = NewStructure(model);
+    // One collapsed edge leaves a triangle with an area: a load face, not a degenerate one.
+    ModelPartIO(WriteMdpa("collapsed", kNodes + "Begin Conditions SurfaceCondition3D4N\n 1 0 1 2 3 3\nEnd Conditions\n"))
+        .ReadModelPart(part);
+    EXPECT_EQ(part.NumberOfConditions(), 1u);
+}
 
 TEST(ModelPartIO, UnderflowingValuesReadAsZeroAndUtf8NamesAreKept) {
     RegisterContactApplication();

@@ -50,6 +50,22 @@ def test_contact_processes_prepare_the_2d_patch_interface() -> None:
 
 
 @pytest.mark.skipif(not CASES_DIR.is_dir(), reason="../shared/kratos_cases missing")
+def test_degenerate_interface_face_is_named_with_its_model_part() -> None:
+    _, root = _read_patch()
+    contact = root.GetSubModelPart("Contact_Part")
+    ca.InterfacePreprocessCondition(root).GenerateInterfacePart(contact)
+    # Node 4 moved onto node 3: the interface line 3-4 of the lower block has no length.
+    node = root.GetNode(4)
+    node.X = node.X0 = 1.0
+    expected = (
+        r"condition \d+ \(Line2D2 with nodes \[3, 4\]\) of model part \"Structure.Contact_Part\" "
+        "is a degenerate face, zero length: nodes 3 and 4 are at the same point"
+    )
+    with pytest.raises(ca.InputError, match=expected):
+        ca.NormalCheckProcess(contact, length_proportion=0.1).Execute()
+
+
+@pytest.mark.skipif(not CASES_DIR.is_dir(), reason="../shared/kratos_cases missing")
 def test_alm_parameters_and_fast_init_from_python() -> None:
     _, root = _read_patch()
     contact = root.GetSubModelPart("Contact_Part")
