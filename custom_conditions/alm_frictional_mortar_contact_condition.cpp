@@ -36,7 +36,8 @@ void AddALMFrictionalResidual(const TState& s, double k, const FrictionalParamet
         lambda_row = n * (k * gap);
         if (p.slip[j]) {  // Coulomb slip, weighted by ω_j so that the pairs assemble the nodal law exactly
             const T augmented_normal = k * lambda_n + eps * nodal.TransmittedGap(j, gap);
-            const Vec trial = p_lambda * k + nodal.Slip(j, pair_slip) * (p.tangent_factor * eps);
+            const Vec trial = (p_lambda * k + nodal.Slip(j, pair_slip) * (p.tangent_factor * eps))
+                                  .cwiseProduct(p.free_components.row(j).transpose().template cast<T>());
             const Vec direction = SlipDirection<T, TDim, TNS>(trial, p, j, std::abs(Value(augmented_normal)) + 1e-300);
             const Vec traction = p_lambda * k + direction * (p.mu[j] * augmented_normal);
             lambda_row -= ProjectTangent<T, TDim>(s, j, traction) * (nodal.weight[j] * k / eps);

@@ -55,7 +55,10 @@ struct FrictionalParameters {
     std::array<bool, TNS> slip{};              ///< SLIP (active nodes): slip, otherwise stick
     Eigen::Matrix<double, TNS, 1> mu;          ///< FRICTION_COEFFICIENT
     Eigen::Matrix<double, TNS, TDim> tangent;  ///< TANGENT_XI, or the fallback of n_j
-    double tangent_factor = 0.0;               ///< κ = TANGENT_FACTOR
+    /// 0 where a VECTOR_LAGRANGE_MULTIPLIER component is a fixed DoF (a symmetry plane, docs/theory/mortar.md §8), else
+    /// 1: a held component carries no traction, so the slip direction leaves it out.
+    Eigen::Matrix<double, TNS, TDim> free_components = Eigen::Matrix<double, TNS, TDim>::Ones();
+    double tangent_factor = 0.0;  ///< κ = TANGENT_FACTOR
 };
 
 /// Reads ε, δ, ACTIVE (via ReadNodalParameters, @p penalty_required_on as there), SLIP, μ, t and κ.
@@ -75,6 +78,8 @@ FrictionalParameters<TDim, TNS> ReadFrictionalParameters(const Geometry& slave, 
         Eigen::Matrix<double, TDim, 1> t = node.GetValue(TANGENT_XI).template head<TDim>();
         if (!(t.norm() > 0.0)) t = FallbackTangent<TDim>(ToSpatialVector<TDim>(node.FastGetSolutionStepValue(NORMAL)));
         p.tangent.row(j) = t.transpose();
+        for (int c = 0; c < TDim; ++c)
+            if (ContactUtilities::IsMultiplierComponentHeld(node, c)) p.free_components(j, c) = 0.0;
         if (!needs_kappa_node && needs_kappa(p.nodal.active[j], p.slip[j])) needs_kappa_node = &node;
     }
     if (process_info.Has(TANGENT_FACTOR)) p.tangent_factor = process_info.GetValue(TANGENT_FACTOR);

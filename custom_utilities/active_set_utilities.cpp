@@ -155,8 +155,12 @@ Array3 TrialTangentialTraction(const Node& node, const ProcessInfo& process_info
         slip = ContactUtilities::TransmittedWeightedSlip(node) + node.GetValue(TANGENT_SLIP);
     }
     Array3 trial = tangent_factor * penalty * tangential(slip);
-    if (with_multiplier)
+    if (with_multiplier) {
         trial += process_info.GetValue(SCALE_FACTOR) * tangential(node.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER));
+        // A held multiplier component carries no traction (a symmetry plane, docs/theory/mortar.md §8).
+        for (int c = 0; c < 3; ++c)
+            if (ContactUtilities::IsMultiplierComponentHeld(node, c)) trial[c] = 0.0;
+    }
     return trial;
 }
 

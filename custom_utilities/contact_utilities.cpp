@@ -50,6 +50,15 @@ Array3 ContactUtilities::TransmittedWeightedSlip(const Node& node) {
                                                      : Array3(Array3::Zero());
 }
 
+namespace {
+const Variable<double>* const kMultiplierComponents[3] = {&VECTOR_LAGRANGE_MULTIPLIER_X, &VECTOR_LAGRANGE_MULTIPLIER_Y,
+                                                          &VECTOR_LAGRANGE_MULTIPLIER_Z};
+}  // namespace
+
+bool ContactUtilities::IsMultiplierComponentHeld(const Node& node, int c) {
+    return node.HasDofFor(*kMultiplierComponents[c]) && node.IsFixed(*kMultiplierComponents[c]);
+}
+
 double ContactUtilities::CalculateMaxNodalH(const ModelPart& model_part) {
     double result = 0.0;
     for (const auto& node : model_part.Nodes()) result = std::max(result, NodalH(*node));
@@ -165,8 +174,6 @@ constexpr double kSymmetryPlaneNormalTolerance = 0.1;
 
 std::vector<Dof*> ContactUtilities::FixSymmetryPlaneMultipliers(ModelPart& computing, const std::vector<Dof*>& fixed) {
     const Variable<double>* displacement[3] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
-    const Variable<double>* multiplier[3] = {&VECTOR_LAGRANGE_MULTIPLIER_X, &VECTOR_LAGRANGE_MULTIPLIER_Y,
-                                             &VECTOR_LAGRANGE_MULTIPLIER_Z};
     for (Dof* dof : fixed) dof->FreeDof();
     // Per slave node and component c: bit c of .first = some pair has master nodes on the node's plane c = X_c, all
     // held in c; bit c of .second = some pair has such a master node that is free.
@@ -188,7 +195,7 @@ std::vector<Dof*> ContactUtilities::FixSymmetryPlaneMultipliers(ModelPart& compu
             if (!node.SolutionStepsDataHas(WEIGHTED_SLIP)) continue;
             const Array3& normal = node.FastGetSolutionStepValue(NORMAL);
             for (int c = 0; c < 3; ++c) {
-                if (!node.IsFixed(*displacement[c]) || !node.HasDofFor(*multiplier[c])) continue;
+                if (!node.IsFixed(*displacement[c]) || !node.HasDofFor(*kMultiplierComponents[c])) continue;
                 if (std::abs(normal[c]) > kSymmetryPlaneNormalTolerance * normal.norm()) continue;
                 for (std::size_t l = 0; l < master.size(); ++l) {
                     if (std::abs(master[l].InitialCoordinates()[c] - node.InitialCoordinates()[c]) > tolerance) continue;
@@ -204,7 +211,7 @@ std::vector<Dof*> ContactUtilities::FixSymmetryPlaneMultipliers(ModelPart& compu
     for (const auto& [node, plane] : planes) {
         for (int c = 0; c < 3; ++c) {
             if (!(plane.first & ~plane.second & (1u << c))) continue;
-            Dof& dof = node->GetDof(*multiplier[c]);
+            Dof& dof = node->GetDof(*kMultiplierComponents[c]);
             if (dof.IsFixed()) continue;  // fixed by the user
             dof.FixDof();
             node->FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER)[c] = 0.0;

@@ -25,6 +25,9 @@ public:
     /// @brief T = AREA_WEIGHTED_PAIR_SLIP / NODAL_AREA, the weighted slip the pairs' penalty stick rows transmit to a
     ///        slave node (docs/theory/mortar.md §7); WEIGHTED_SLIP where the node has no area.
     static Array3 TransmittedWeightedSlip(const Node& node);
+    /// @brief Whether component @p c of the node's VECTOR_LAGRANGE_MULTIPLIER is a fixed DoF: held at a symmetry plane
+    ///        (FixSymmetryPlaneMultipliers) or by the user, so it carries no traction (docs/theory/mortar.md §8).
+    static bool IsMultiplierComponentHeld(const Node& node, int c);
     /// @brief Largest NODAL_H of the nodes of @p model_part (0 for an empty part).
     static double CalculateMaxNodalH(const ModelPart& model_part);
     /// @brief Arithmetic mean of NODAL_H over the nodes of @p model_part (0 for an empty part).

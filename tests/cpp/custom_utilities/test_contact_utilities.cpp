@@ -6,6 +6,7 @@
 #include "contact_app/application.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/model.h"
+#include "custom_utilities/active_set_utilities.h"
 #include "custom_utilities/contact_utilities.h"
 #include "tests/cpp/custom_conditions/contact_condition_test_utilities.h"
 
@@ -124,6 +125,20 @@ TEST(ContactUtilities, test_symmetry_plane_holds_the_tangential_multiplier) {
     EXPECT_FALSE(slave.IsFixed(VECTOR_LAGRANGE_MULTIPLIER_Y));
     EXPECT_EQ(slave.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER), Array3(0, 6, 0));
     EXPECT_FALSE(part.GetNode(2).IsFixed(VECTOR_LAGRANGE_MULTIPLIER_X));  // not held itself
+    // A held component carries no traction: the slip law's trial direction leaves it out.
+    EXPECT_TRUE(ContactUtilities::IsMultiplierComponentHeld(slave, 0));
+    EXPECT_FALSE(ContactUtilities::IsMultiplierComponentHeld(slave, 1));
+    EXPECT_FALSE(ContactUtilities::IsMultiplierComponentHeld(part.GetNode(2), 0));
+    ProcessInfo& info = part.GetProcessInfo();
+    info.SetValue(SCALE_FACTOR, 1.0);
+    info.SetValue(TANGENT_FACTOR, 1.0);
+    info.SetValue(INITIAL_PENALTY, 2.0);
+    for (IndexType id : {1, 2}) {
+        part.GetNode(id).FastGetSolutionStepValue(NORMAL) = Array3(0, 1, 0);
+        part.GetNode(id).FastGetSolutionStepValue(WEIGHTED_SLIP) = Array3(0.5, 0, 0);
+    }
+    EXPECT_EQ(ActiveSetUtilities::TrialTangentialTraction(slave, info, true), Array3(0, 0, 0));
+    EXPECT_EQ(ActiveSetUtilities::TrialTangentialTraction(part.GetNode(2), info, true), Array3(1, 0, 0));
     // A normal across the plane (a roller under a sloped interface): the traction has an x part, nothing is fixed.
     slave.FastGetSolutionStepValue(NORMAL) = Array3(0.2, 1, 0).normalized();
     EXPECT_TRUE(ContactUtilities::FixSymmetryPlaneMultipliers(part, fixed).empty());

@@ -87,8 +87,10 @@ def test_cattaneo_mindlin_3d_coarsest_mesh_obeys_coulomb(tmp_path: Path) -> None
 def test_cattaneo_mindlin_3d_default_level_stick_radius(tmp_path: Path) -> None:
     """Level 2 (a/h = 2.9): stick radius from the set and from the deficit moment.
 
-    Measured: 4, 3, 3, 4, 4, 4, 4, 4 iterations, c/a 0.7956 from the deficit moment (+0.24 %),
-    0.760 from the stick set (h/2 = 0.1 mm), friction force -4.5e-4 against Q.
+    Measured: 3, 3, 3, 3, 4, 4, 4, 5 iterations, c/a 0.7953 from the deficit moment (+0.20 %),
+    0.760 from the stick set (h/2 = 0.1 mm), friction force -4.5e-5 against Q, traction within
+    1.8e-2 degrees of WEIGHTED_SLIP at every slipping node (1.7 degrees on the symmetry plane
+    before the held multiplier component left the trial direction).
     """
     _copy_inputs(tmp_path)
     result = _load("run_cattaneo_mindlin_3d").run(tmp_path, 2)
@@ -96,6 +98,7 @@ def test_cattaneo_mindlin_3d_default_level_stick_radius(tmp_path: Path) -> None:
     assert max(result.iterations) <= 6, result.iterations
     assert result.coulomb_slip_deviation < 1e-6
     assert result.min_power > 0.0
-    assert result.tangential_force_error < 1e-3
+    assert result.tangential_force_error < 1e-4
+    assert result.max_slip_angle < 0.1
     assert result.c_deficit_error < 0.01
     assert abs(result.zone.c - result.c_analytic) <= result.spacing / 2.0
