@@ -5,7 +5,8 @@ Order of the calls (``kratos_python_layer.md`` §1.4):
 * ``Initialize``: modelers → ``solver.ImportModelPart`` → ``PrepareModelPart`` → ``AddDofs`` →
   ``ModifyInitialProperties`` → ``ModifyInitialGeometry`` → processes created → every process
   ``ExecuteInitialize`` → ``solver.Initialize`` → ``Check`` → ``ModifyAfterSolverInitialize`` →
-  every process ``ExecuteBeforeSolutionLoop`` → TIME = start_time.
+  every process ``ExecuteBeforeSolutionLoop`` → TIME = start_time (a restarted model part keeps the
+  TIME and STEP of its restart file).
 * ``RunSolutionLoop``: while ``time < end_time`` (up to round-off of the step,
   :func:`contact_app.analysis.time_loop.keep_advancing`): ``AdvanceInTime`` →
   ``InitializeSolutionStep`` (processes ``ExecuteInitializeSolutionStep``,
@@ -107,8 +108,14 @@ class AnalysisStage:
             self.ModifyAfterSolverInitialize()
             for process in self._GetListOfProcesses():
                 process.ExecuteBeforeSolutionLoop()
-            self.time = self.start_time
-            solver.GetComputingModelPart().ProcessInfo[ca.TIME] = self.time
+            info = solver.GetComputingModelPart().ProcessInfo
+            if info[ca.IS_RESTARTED]:
+                self.time = float(
+                    info[ca.TIME]
+                )  # the loop resumes at the restart file's TIME and STEP
+            else:
+                self.time = self.start_time
+                info[ca.TIME] = self.time
 
     def RunSolutionLoop(self) -> None:
         """Solve the steps while ``time < end_time``."""

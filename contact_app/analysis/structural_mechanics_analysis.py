@@ -8,8 +8,10 @@ Top-level keys of ``ProjectParameters.json``:
 * ``processes``, ``output_processes``: objects whose values are lists of process descriptors.
 * ``modelers``: must be empty (modelers are not supported).
 * ``analysis_stage``: accepted when it names the structural analysis.
-* ``restart_options``, ``constraints_data``, any key starting with ``_``: ignored (``_`` = a
-  disabled block).
+* ``restart_options``: ``SaveRestart``, ``RestartFrequency``, ``LoadRestart``, ``Restart Step``,
+  ``RestartControl``, ``Serializer Trace`` (``contact_app/io/restart_utility.py``; ``LoadRestart``
+  becomes ``model_import_settings.input_type`` "rest").
+* ``constraints_data``, any key starting with ``_``: ignored (``_`` = a disabled block).
 
 Anything else is an error. The process lists of old files at the top level
 (``constraints_process_list``, ``loads_process_list``, ...) are rejected as Kratos does ("the old
@@ -22,6 +24,7 @@ from __future__ import annotations
 import copy
 import json
 import logging
+import math
 import os
 from pathlib import Path
 from typing import Any
@@ -48,7 +51,16 @@ TOP_LEVEL_KEYS = (
     "modelers",
     "analysis_stage",
 )
-IGNORED_KEYS = ("restart_options", "constraints_data")
+IGNORED_KEYS = ("restart_options", "constraints_data")  # restart_options: checked on its own
+#: ``restart_options`` of the Kratos structural analysis (contact_app/io/restart_utility.py).
+RESTART_OPTION_KEYS: dict[str, Any] = {
+    "SaveRestart": False,
+    "RestartFrequency": 0.0,
+    "LoadRestart": False,
+    "Restart Step": 0.0,
+    "RestartControl": "time",
+    "Serializer Trace": "no_trace",
+}
 LEGACY_PROCESS_LISTS = (
     "constraints_process_list",
     "loads_process_list",
@@ -190,11 +202,68 @@ def ValidateProjectParameters(parameters: Parameters) -> None:
                 f'use "{STRUCTURAL_STAGES[0]}"',
             )
     if parameters.Has("restart_options"):
-        options = parameters["restart_options"]
-        if options.IsSubParameter() and any(v.IsBool() and v.GetBool() for v in options.values()):
-            logger.warning(
-                "%s: restart is not supported; ignored", parameters.Where("restart_options")
-            )
+        _ValidateRestartOptions(parameters)
+
+
+def RestartBaseName(parameters: Parameters) -> str:
+    """Base name of restart files: problem_name, else the mesh file name, else the model part."""
+    name = parameters["problem_data"]["problem_name"].GetString()
+    if name:
+        return name
+    solver = parameters["solver_settings"]
+    imports = solver["model_import_settings"] if solver.Has("model_import_settings") else None
+    if (
+        imports is not None
+        and imports.Has("input_filename")
+        and imports["input_filename"].GetString()
+    ):
+        return Path(imports["input_filename"].GetString()).stem
+    return solver["model_part_name"].GetString() if solver.Has("model_part_name") else "Structure"
+
+
+def RestartLabel(value: float, control: str) -> str:
+    """The file label of a restart TIME (12 significant digits) or STEP, as the files are named."""
+    return str(int(value)) if control == "step" else str(float(f"{value:.12g}"))
+
+
+def _ValidateRestartOptions(parameters: Parameters) -> None:
+    """Check restart_options; LoadRestart becomes model_import_settings input_type "rest"."""
+    options = parameters["restart_options"]
+    if not options.IsSubParameter():
+        raise error(parameters, "restart_options", '"restart_options" is not an object', "{...}")
+    if options.Has("Restart_Step") and not options.Has("Restart Step"):
+        options.AddValue("Restart Step", options["Restart_Step"])  # the older GiD spelling
+        options.RemoveValue("Restart_Step")
+    options.ValidateAndAssignDefaults(RESTART_OPTION_KEYS)
+    control = choice(options, "RestartControl", ("time", "step"), "RestartControl")
+    choice(
+        options, "Serializer Trace", ("no_trace", "trace_error", "trace_all"), "Serializer Trace"
+    )
+    if options["Serializer Trace"].GetString() != "no_trace":
+        logger.warning(
+            "%s: restart files are always binary with every section checked; no trace is written",
+            options.Where("Serializer Trace"),
+        )
+    for key in ("RestartFrequency", "Restart Step"):
+        value = options[key].GetDouble()
+        if not math.isfinite(value) or value < 0.0:
+            raise error(options, key, f"{key} {value} is not a finite number >= 0", "0 or more")
+    if not options["LoadRestart"].GetBool():
+        return
+    solver = parameters["solver_settings"]
+    if not solver.Has("model_import_settings"):
+        solver.AddValue("model_import_settings", {})
+    imports = solver["model_import_settings"]
+    base = RestartBaseName(parameters)
+    label = RestartLabel(options["Restart Step"].GetDouble(), control)
+    for key, value in (
+        ("input_type", "rest"),
+        ("input_filename", base),
+        ("restart_load_file_label", label),
+    ):
+        if imports.Has(key):
+            imports.RemoveValue(key)
+        imports.AddValue(key, value)
 
 
 def _ValidateProblemData(problem_data: Parameters) -> None:
@@ -277,6 +346,7 @@ class StructuralMechanicsAnalysis(AnalysisStage):
             for k in ("contact_settings", "mpc_contact_settings")
         )
         self._factory = KratosProcessFactory(model, self.paths, safe=safe)
+        self._restart: Any = None
         self._GetSolver().AddVariables()
         self._expected_steps = self._GetSolver().CountSteps(self.start_time, self.end_time)
         self._CheckProcessModules()
@@ -307,12 +377,35 @@ class StructuralMechanicsAnalysis(AnalysisStage):
     def Initialize(self) -> None:
         """Kratos Initialize, plus ``ProjectParametersOutput.json`` when echo_level > 1."""
         super().Initialize()
+        self._restart = self._CreateRestartSaver()
         if self.echo_level > 1:
             with open("ProjectParametersOutput.json", "w", encoding="utf-8") as stream:
                 json.dump(self.project_parameters.GetValue(), stream, indent=4)
 
     def _ExpectedSteps(self) -> int | None:
         return self._expected_steps
+
+    def OutputSolutionStep(self) -> None:
+        """Kratos OutputSolutionStep, then the restart file of the step when one is due."""
+        super().OutputSolutionStep()
+        if self._restart is not None and self._restart.IsRestartOutputStep():
+            self._restart.SaveRestart()
+
+    def _CreateRestartSaver(self) -> Any:
+        """The RestartUtility of ``restart_options.SaveRestart`` (None when not saving)."""
+        if not self.project_parameters.Has("restart_options"):
+            return None
+        options = self.project_parameters["restart_options"]
+        if not options["SaveRestart"].GetBool():
+            return None
+        from ..io.restart_utility import RestartUtility
+
+        return RestartUtility(
+            self._GetSolver().main_model_part,
+            RestartBaseName(self.project_parameters),
+            restart_save_frequency=options["RestartFrequency"].GetDouble(),
+            restart_control_type=options["RestartControl"].GetString(),
+        )
 
     def Finalize(self) -> None:
         """Kratos Finalize, then the summary (with the files the outputs wrote)."""

@@ -191,7 +191,15 @@ class VtkOutputProcess(OutputProcess):
     # -- life cycle --
 
     def ExecuteInitialize(self) -> None:
-        """Delete files of earlier runs that follow this process' naming pattern."""
+        """Delete files of earlier runs that follow this process' naming pattern.
+
+        After a restart (ProcessInfo IS_RESTARTED) the files up to the restart TIME are kept and
+        the collection goes on from them; later files of the interrupted run are deleted.
+        """
+        process_info = self.model_part.ProcessInfo
+        if process_info[_core.IS_RESTARTED]:
+            self._resume(float(process_info[_core.TIME]))
+            return
         for part in self.parts:
             stem = self._stem(part)
             pattern = (
@@ -204,6 +212,26 @@ class VtkOutputProcess(OutputProcess):
             pvd = self.folder / f"{stem}{self.postfix}.pvd"
             if pvd.exists():
                 pvd.unlink()
+
+    def _resume(self, time: float) -> None:
+        current = time if self.control == "time" else float(self.model_part.ProcessInfo[_core.STEP])
+        if (
+            self.interval > 0.0
+        ):  # the schedule of a run that started from 0 and printed on its multiples
+            self.next_output = 0.0
+            while _round(self.next_output) <= _round(current):
+                self.next_output += self.interval
+        for part in self.parts:
+            stem = self._stem(part)
+            pvd = self.folder / f"{stem}{self.postfix}.pvd"
+            entries = _read_pvd(pvd)
+            kept = [e for e in entries if _round(e[0]) <= _round(time)]
+            for entry_time, name in entries:
+                if _round(entry_time) > _round(time) and (self.folder / name).is_file():
+                    os.remove(self.folder / name)
+            self.collections[stem] = kept
+            if entries:
+                _write_pvd(pvd, kept)
 
     def IsOutputStep(self) -> bool:
         """True if the current step/time has reached the next output."""
@@ -491,6 +519,20 @@ def _extrapolate(
         return np.zeros(count)
     averaged = totals / np.maximum(hits, 1.0)[:, None]
     return averaged[:, 0] if averaged.shape[1] == 1 else averaged
+
+
+def _read_pvd(path: Path) -> list[tuple[float, str]]:
+    """The ``(time, file)`` entries of a collection written by :func:`_write_pvd` ([] if none)."""
+    if not path.is_file():
+        return []
+    from xml.etree import ElementTree
+
+    root = ElementTree.parse(path).getroot()
+    return [
+        (float(item.get("timestep", "0")), item.get("file", ""))
+        for item in root.iter("DataSet")
+        if item.get("file")
+    ]
 
 
 def _write_pvd(path: Path, entries: list[tuple[float, str]]) -> None:

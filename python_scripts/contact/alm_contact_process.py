@@ -186,6 +186,9 @@ class ALMContactProcess(SearchBaseProcess):
                     self.process_name,
                 )
         super().ExecuteInitialize()
+        frequency = self.settings["slip_step_reset_frequency"].GetInt()
+        if self.main_model_part.ProcessInfo[ca.IS_RESTARTED] and frequency > 0:
+            self.slip_reset_counter = int(self.main_model_part.ProcessInfo[ca.STEP]) % frequency
 
     def _initialize_process_info(self) -> None:
         super()._initialize_process_info()

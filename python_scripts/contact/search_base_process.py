@@ -236,6 +236,9 @@ class SearchBaseProcess(Process):
         """Build the Contact part, nodal sizes, properties and the searches (§7.1 steps 1–13)."""
         main = self.main_model_part
         self.dimension = main.ProcessInfo[ca.DOMAIN_SIZE]
+        if main.ProcessInfo[ca.IS_RESTARTED]:
+            self._resume_from_restart()
+            return
         if main.HasSubModelPart("Contact") and main.Is(ca.MODIFIED):
             main.RemoveSubModelPart("Contact")
         self.preprocess = not main.HasSubModelPart("Contact")
@@ -270,6 +273,40 @@ class SearchBaseProcess(Process):
         for key in self.pairs:
             self.searches[key] = self._create_search(key)
         self._initialize_search_conditions()
+        for search in self.searches.values():
+            search.ExecuteInitialize()
+
+    def _resume_from_restart(self) -> None:
+        """After a restart: attach to the Contact parts, pairs and nodal values of the restart file.
+
+        Nothing is recomputed (nodal sizes, normals, penalty, initial active set, flags and
+        ProcessInfo values all come from the file, as the continuous run left them); only the C++
+        searches are created again, on the restored pairs and INDEX_MAPs.
+        """
+        main = self.main_model_part
+        for name in ("Contact", "ComputingContact"):
+            if not main.HasSubModelPart(name):
+                raise ca.InputError(
+                    f'{self.process_name}: the restart file has no sub model part "{name}" in '
+                    f"{main.FullName()}\n  fix: load a restart file written by a run with this "
+                    "contact process"
+                )
+        self.preprocess = False
+        self.contact_model_part = main.GetSubModelPart("Contact")
+        self.computing_model_part = main.GetSubModelPart("ComputingContact")
+        if not self.pairs:
+            sub = self.contact_model_part.GetSubModelPart("ContactSub0")
+            self.pairs = {"0": [sub.Name]}
+            self.interface_parts = {"0": [sub]}
+        root = main.GetRootModelPart()
+        for key in self.pairs:
+            self.pair_properties[key] = root.GetProperties(self.property_ids[key] or 100 + int(key))
+            self.searches[key] = self._create_search(key)
+        step = int(main.ProcessInfo[ca.STEP])
+        if step >= 1:  # the counter of the continuous run after that step
+            self.database_step = (step - 1) % max(self.database_step_update, 1)
+        # The searches mark the faces they own; the file holds the marks of the first run.
+        ca.VariableUtils().SetFlag(ca.MARKER, False, self.contact_model_part.Conditions)
         for search in self.searches.values():
             search.ExecuteInitialize()
 

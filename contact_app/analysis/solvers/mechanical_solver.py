@@ -86,6 +86,11 @@ MODEL_IMPORT_KEYS: dict[str, Any] = {
     "skip_timer": True,
     "ignore_variables_not_in_solution_step_data": False,
     "mesh_mapping": {},
+    # input_type "rest" (Kratos RestartUtility):
+    # <input_filename>__restart_files/<input_filename>_<label>.rest
+    "restart_load_file_label": "",
+    "load_restart_files_from_folder": True,
+    "serializer_trace": "no_trace",
 }
 #: Extensions read through meshio when input_type is left at "mdpa" (detection by extension).
 MESHIO_EXTENSIONS = (
@@ -140,6 +145,7 @@ class MechanicalSolver:
         self._materials: MaterialsReader | None = None
         self._mdpa_path = ""
         self._meshio_path = ""
+        self._restart_path = ""
         self._meshio_mapping: dict[str, Any] = {}
         self._meshio_where = ""
         self._time_step_table: Any = None
@@ -420,9 +426,10 @@ class MechanicalSolver:
             ("mdpa", "meshio", "use_input_model_part", "rest"),
             "input_type",
         )
-        if kind == "rest":
-            raise not_supported(settings, "input_type", "restart input", 'use "mdpa"')
         filename = settings["input_filename"].GetString()
+        if kind == "rest":
+            self._ValidateRestartImport(settings, filename)
+            return
         if kind == "mdpa" and filename.lower().endswith(MESHIO_EXTENSIONS):
             kind = "meshio"
         if kind == "meshio":
@@ -468,6 +475,36 @@ class MechanicalSolver:
                 filename + ".mdpa", settings.Where("input_filename"), "mdpa file"
             )
 
+    def _ValidateRestartImport(self, settings: Parameters, filename: str) -> None:
+        """input_type "rest": the restart file must exist; its header and hash are checked here."""
+        from ...io.restart_utility import SERIALIZER_TRACES, Inspect, RestartFile
+
+        choice(settings, "serializer_trace", SERIALIZER_TRACES, "serializer_trace")
+        label = settings["restart_load_file_label"].GetString()
+        for key, value, expected in (
+            ("input_filename", filename, "the base name of the restart files, e.g. hertz_2d"),
+            ("restart_load_file_label", label, 'the TIME or STEP label of the file, e.g. "0.5"'),
+        ):
+            if not value:
+                raise error(
+                    settings, key, f'missing required key "{key}" for input_type "rest"', expected
+                )
+        name = RestartFile(filename, label, settings["load_restart_files_from_folder"].GetBool())
+        self._restart_path = self.paths.input_path(
+            str(name), settings.Where("restart_load_file_label"), "restart file"
+        )
+        summary = Inspect(self._restart_path)
+        expected_name = self.settings["model_part_name"].GetString()
+        if summary["model_part_name"] != expected_name:
+            raise error(
+                settings,
+                "restart_load_file_label",
+                f'the restart file "{self._restart_path}" holds the model part '
+                f'"{summary["model_part_name"]}", not "{expected_name}"',
+                "a restart file of solver_settings.model_part_name",
+                "pick the restart file of this model part",
+            )
+
     def _ValidateMaterialImport(self) -> None:
         settings = self.settings["material_import_settings"]
         settings.ValidateAndAssignDefaults({"materials_filename": "", "custom_reader": ""})
@@ -509,7 +546,7 @@ class MechanicalSolver:
         import_settings = self.settings["model_import_settings"]
         files = [
             (path, import_settings.Where("input_filename"))
-            for path in (self._mdpa_path, self._meshio_path)
+            for path in (self._mdpa_path, self._meshio_path, self._restart_path)
             if path
         ]
         if self._materials is not None:
@@ -601,6 +638,12 @@ class MechanicalSolver:
             InputError: the mesh file defines no node (empty or unreadable), named as such rather
                 than later as a model part missing from the materials file.
         """
+        if self._restart_path:
+            from ...io.restart_utility import Load
+
+            Load(self.main_model_part, self._restart_path)
+            self.main_model_part.ProcessInfo[ca.IS_RESTARTED] = True
+            return
         if self._mdpa_path:
             ca.ModelPartIO(self._mdpa_path).ReadModelPart(self.main_model_part)
         elif self._meshio_path:
@@ -620,7 +663,13 @@ class MechanicalSolver:
             )
 
     def PrepareModelPart(self) -> None:
-        """Assign the materials, set and fill the history buffer, check the computing part."""
+        """Assign the materials, set and fill the history buffer, check the computing part.
+
+        A restarted model part keeps the properties, buffer and ProcessInfo of its restart file.
+        """
+        if self.IsRestarted():
+            self.GetComputingModelPart()
+            return
         if self._materials is not None:
             self._materials.Apply(self.model)
         elif self.main_model_part.NumberOfElements():
@@ -630,6 +679,10 @@ class MechanicalSolver:
             CheckMeshProperties(self.main_model_part, Path(mesh).name)
         self._SetAndFillBuffer()
         self.GetComputingModelPart()
+
+    def IsRestarted(self) -> bool:
+        """True once the model part was loaded from a restart file (ProcessInfo IS_RESTARTED)."""
+        return bool(self.main_model_part.ProcessInfo[ca.IS_RESTARTED])
 
     def _SetAndFillBuffer(self) -> None:
         part = self.main_model_part

@@ -169,7 +169,22 @@ def test_builder_settings_without_type_use_the_legacy_flags() -> None:
             "solver_settings › linear_solver_settings › solver_type",
         ),
         ({"linear_solver_settings": {"tolerance": 0.0}}, ca.InputError, '"tolerance" is 0.0'),
-        ({"model_import_settings": {"input_type": "rest"}}, ca.ConfigurationError, "restart"),
+        (
+            {"model_import_settings": {"input_type": "rest", "input_filename": "case"}},
+            ca.InputError,
+            'missing required key "restart_load_file_label"',
+        ),
+        (
+            {
+                "model_import_settings": {
+                    "input_type": "rest",
+                    "input_filename": "no_such_case",
+                    "restart_load_file_label": "1.0",
+                }
+            },
+            ca.InputError,
+            "no_such_case__restart_files",
+        ),
         (
             {"model_import_settings": {"input_type": "mdpa"}},
             ca.InputError,

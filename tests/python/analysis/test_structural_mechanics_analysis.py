@@ -281,14 +281,28 @@ def test_top_level_validation_messages(edit: Any, message: str) -> None:
         ValidateProjectParameters(Parameters(parameters, source="case.json"))
 
 
-def test_top_level_ignores_disabled_blocks_and_restart_options(
+def test_top_level_ignores_disabled_blocks_and_checks_restart_options(
     caplog: pytest.LogCaptureFixture,
 ) -> None:
     parameters = _minimal()
     parameters.update(_output_processes={"whatever": 1}, restart_options={"SaveRestart": True})
+    ValidateProjectParameters(Parameters(parameters))
+    parameters["restart_options"] = {"RestartControl": "steps"}
+    with pytest.raises(ca.InputError, match="RestartControl"):
+        ValidateProjectParameters(Parameters(parameters))
+    parameters["restart_options"] = {"RestartFrequncy": 1.0}
+    with pytest.raises(ca.InputError, match="RestartFrequency"):
+        ValidateProjectParameters(Parameters(parameters))
+    parameters["restart_options"] = {"Serializer Trace": "trace_all"}
     with caplog.at_level(logging.WARNING, logger="contact_app"):
         ValidateProjectParameters(Parameters(parameters))
-    assert "restart is not supported" in caplog.text
+    assert "always binary" in caplog.text
+    parameters["restart_options"] = {"LoadRestart": True, "Restart_Step": 2}
+    checked = Parameters(parameters)
+    ValidateProjectParameters(checked)
+    imports = checked["solver_settings"]["model_import_settings"]
+    assert imports["input_type"].GetString() == "rest"
+    assert imports["restart_load_file_label"].GetString() == "2.0"
 
 
 def test_modelers_and_mpi_are_configuration_errors() -> None:
