@@ -2,6 +2,7 @@
 #include "custom_processes/alm_variables_calculation_process.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <limits>
 
@@ -34,9 +35,11 @@ struct SideSums {
 ALMVariablesCalculationProcess::ALMVariablesCalculationProcess(ModelPart& model_part, double stiffness_factor,
                                                                double penalty_scale_factor)
     : mrModelPart(model_part), mStiffnessFactor(stiffness_factor), mPenaltyScaleFactor(penalty_scale_factor) {
-    CONTACT_CHECK(stiffness_factor > 0.0 && penalty_scale_factor > 0.0, InputError,
+    CONTACT_CHECK(stiffness_factor > 0.0 && penalty_scale_factor > 0.0 && std::isfinite(stiffness_factor) &&
+                      std::isfinite(penalty_scale_factor),
+                  InputError,
                   "ALMVariablesCalculationProcess: stiffness_factor ", stiffness_factor, " and penalty_scale_factor ",
-                  penalty_scale_factor, " must be positive\n  fix: set advance_ALM_parameters.stiffness_factor and",
+                  penalty_scale_factor, " must be positive and finite\n  fix: set advance_ALM_parameters.stiffness_factor and",
                   " penalty_scale_factor to positive values (default 1.0)");
 }
 

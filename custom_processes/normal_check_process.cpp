@@ -56,9 +56,13 @@ void FlipCondition(ModelPart& root, const Condition::Pointer& condition) {
 
 NormalCheckProcess::NormalCheckProcess(ModelPart& model_part, double length_proportion, double check_threshold)
     : mrModelPart(model_part), mLengthProportion(length_proportion), mCheckThreshold(check_threshold) {
-    CONTACT_CHECK(length_proportion > 0.0, InputError, "NormalCheckProcess: length_proportion is ", length_proportion,
+    CONTACT_CHECK(length_proportion > 0.0 && std::isfinite(length_proportion), InputError,
+                  "NormalCheckProcess: length_proportion is ", length_proportion,
                   "\n  expected: a positive fraction of the condition size (default 0.1)",
                   "\n  fix: set normal_check_proportion to e.g. 0.1");
+    CONTACT_CHECK(check_threshold >= 0.0 && std::isfinite(check_threshold), InputError,
+                  "NormalCheckProcess: check_threshold is ", check_threshold,
+                  "\n  expected: a finite tolerance >= 0 (default 5e-7)");
 }
 
 void NormalCheckProcess::Execute() {

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "contact_app/bindings/binding_helpers.h"
 #include "contact_app/bindings/bindings.h"
+#include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/node.h"
 
 namespace contact_app::bindings {
@@ -12,6 +14,20 @@ namespace contact_app::bindings {
 namespace {
 
 using NodeClass = py::class_<Node, Flags, std::shared_ptr<Node>>;
+
+/// @p value if finite; InputError naming the node and the coordinate otherwise (a NaN coordinate
+/// would surface much later as a zero normal or a singular system).
+double FiniteCoordinate(double value, IndexType id, const char* which) {
+    CONTACT_CHECK(std::isfinite(value), InputError, "coordinate ", which, " of node ", id, " set to ", value,
+                  "\n  expected: a finite number\n  fix:      check how the coordinate was computed");
+    return value;
+}
+
+Array3 FiniteCoordinates(const Array3& value, IndexType id, const char* which) {
+    CONTACT_CHECK(value.allFinite(), InputError, which, " of node ", id, " set to (", value[0], ", ", value[1], ", ",
+                  value[2], ")\n  expected: finite numbers\n  fix:      check how the coordinates were computed");
+    return value;
+}
 
 /// Historical get/set for a variable class the step buffer stores (double, component, 3-vector).
 template <class T>
@@ -101,21 +117,25 @@ void BindNode(py::module_& m) {
     NodeClass node(m, "Node",
                    "A mesh node (Kratos Node): coordinates, flags, historical and non-historical data, DoFs.",
                    py::multiple_inheritance());
-    node.def(py::init<IndexType, double, double, double>(), py::arg("id"), py::arg("x"), py::arg("y"), py::arg("z"),
+    node.def(py::init([](IndexType id, double x, double y, double z) {
+                 return std::make_shared<Node>(id, FiniteCoordinate(x, id, "x"), FiniteCoordinate(y, id, "y"),
+                                               FiniteCoordinate(z, id, "z"));
+             }),
+             py::arg("id"), py::arg("x"), py::arg("y"), py::arg("z"),
              "A free node without historical data (use ModelPart.CreateNewNode for a mesh node).")
         .def_property_readonly("Id", &Node::Id, "Node id.")
         .def_property(
-            "X", &Node::X, [](Node& self, double value) { self.Coordinates()[0] = value; }, "Current x.")
+            "X", &Node::X, [](Node& self, double value) { self.Coordinates()[0] = FiniteCoordinate(value, self.Id(), "x"); }, "Current x.")
         .def_property(
-            "Y", &Node::Y, [](Node& self, double value) { self.Coordinates()[1] = value; }, "Current y.")
+            "Y", &Node::Y, [](Node& self, double value) { self.Coordinates()[1] = FiniteCoordinate(value, self.Id(), "y"); }, "Current y.")
         .def_property(
-            "Z", &Node::Z, [](Node& self, double value) { self.Coordinates()[2] = value; }, "Current z.")
+            "Z", &Node::Z, [](Node& self, double value) { self.Coordinates()[2] = FiniteCoordinate(value, self.Id(), "z"); }, "Current z.")
         .def_property(
-            "X0", &Node::X0, [](Node& self, double value) { self.InitialCoordinates()[0] = value; }, "Initial x.")
+            "X0", &Node::X0, [](Node& self, double value) { self.InitialCoordinates()[0] = FiniteCoordinate(value, self.Id(), "x0"); }, "Initial x.")
         .def_property(
-            "Y0", &Node::Y0, [](Node& self, double value) { self.InitialCoordinates()[1] = value; }, "Initial y.")
+            "Y0", &Node::Y0, [](Node& self, double value) { self.InitialCoordinates()[1] = FiniteCoordinate(value, self.Id(), "y0"); }, "Initial y.")
         .def_property(
-            "Z0", &Node::Z0, [](Node& self, double value) { self.InitialCoordinates()[2] = value; }, "Initial z.")
+            "Z0", &Node::Z0, [](Node& self, double value) { self.InitialCoordinates()[2] = FiniteCoordinate(value, self.Id(), "z0"); }, "Initial z.")
         .def(
             "Coordinates", [](const Node& self) -> Array3 { return self.Coordinates(); },
             "Copy of the current coordinates.")
@@ -123,10 +143,12 @@ void BindNode(py::module_& m) {
             "InitialCoordinates", [](const Node& self) -> Array3 { return self.InitialCoordinates(); },
             "Copy of the initial coordinates.")
         .def(
-            "SetCoordinates", [](Node& self, const Array3& value) { self.Coordinates() = value; },
+            "SetCoordinates", [](Node& self, const Array3& value) { self.Coordinates() = FiniteCoordinates(value, self.Id(), "coordinates"); },
             py::arg("coordinates"), "Sets the current coordinates.")
         .def(
-            "SetInitialCoordinates", [](Node& self, const Array3& value) { self.InitialCoordinates() = value; },
+            "SetInitialCoordinates", [](Node& self, const Array3& value) {
+                self.InitialCoordinates() = FiniteCoordinates(value, self.Id(), "initial coordinates");
+            },
             py::arg("coordinates"), "Sets the initial coordinates.");
 
     DefSolutionStepAccess<double>(node);

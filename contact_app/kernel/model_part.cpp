@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "contact_app/kernel/model_part.h"
 
+#include <cmath>
 #include <sstream>
 
 #include "contact_app/kernel/exceptions.h"
@@ -125,9 +126,16 @@ void ModelPart::SetBufferSize(std::size_t buffer_size) {
 std::size_t ModelPart::GetBufferSize() const { return *mBufferSize; }
 
 void ModelPart::CloneTimeStep(double new_time) {
-    for (const auto& node : GetRootModelPart().mNodes) node->CloneSolutionStep();
     ProcessInfo& info = *mProcessInfo;
     const double old_time = info.GetValue(TIME);
+    // Checked before the buffers move: a NaN TIME would otherwise run every later step silently.
+    CONTACT_CHECK(std::isfinite(new_time), InputError, "CloneTimeStep(", new_time, ") on model part ", FullName(),
+                  ": the new time is not finite\n  expected: a finite time",
+                  "\n  fix:      check the time stepping that computes it (time_step, start_time, end_time)");
+    CONTACT_CHECK(std::isfinite(new_time - old_time), InputError, "CloneTimeStep(", new_time, ") on model part ",
+                  FullName(), ": the step from the current TIME ", old_time, " is not finite",
+                  "\n  expected: a finite TIME and a finite step\n  fix:      check what set TIME");
+    for (const auto& node : GetRootModelPart().mNodes) node->CloneSolutionStep();
     info.SetValue(TIME, new_time);
     info.SetValue(DELTA_TIME, new_time - old_time);
     info.SetValue(STEP, info.GetValue(STEP) + 1);
@@ -138,6 +146,9 @@ void ModelPart::CloneTimeStep(double new_time) {
 void ModelPart::CheckNewId(const char* kind, bool taken, IndexType id) const {
     CONTACT_CHECK(id >= 1, InputError, kind, " id ", id, " in model part ", FullName(), " is invalid",
                   "\n  expected: ids start at 1");
+    constexpr IndexType kMaxId = 9223372036854775807ULL;  // what the JSON layer and the outputs store
+    CONTACT_CHECK(id <= kMaxId, InputError, kind, " id ", id, " in model part ", FullName(),
+                  " is beyond the largest id ", kMaxId, "\n  expected: at most 2^63 - 1");
     CONTACT_CHECK(!taken, InputError, kind, " id ", id, " is already used in model part ",
                   GetRootModelPart().Name(), "\n  fix: ids must be unique per root model part");
 }
@@ -166,6 +177,9 @@ std::vector<Node::Pointer> ModelPart::NodesByIds(const std::vector<IndexType>& n
 Node::Pointer ModelPart::CreateNewNode(IndexType id, double x, double y, double z) {
     ModelPart& root = GetRootModelPart();
     CheckNewId("node", root.mNodes.Contains(id), id);
+    CONTACT_CHECK(std::isfinite(x) && std::isfinite(y) && std::isfinite(z), InputError, "node ", id, " of model part ",
+                  FullName(), " has a non-finite coordinate (", x, ", ", y, ", ", z, ")",
+                  "\n  expected: finite coordinates\n  fix:      check how the coordinates were computed");
     auto node = std::make_shared<Node>(id, x, y, z);
     node->SetSolutionStepVariablesList(mVariables, *mBufferSize);
     UpTheTree(*this, [&](ModelPart& part) { part.mNodes.Insert(node); });
@@ -353,6 +367,9 @@ MasterSlaveConstraint::Pointer ModelPart::CreateNewMasterSlaveConstraint(const s
                                                                          const Vector& constant) {
     const MasterSlaveConstraint& prototype = Registry<MasterSlaveConstraint>::Instance().Get(name);
     CheckNewId("constraint", GetRootModelPart().mConstraints.Contains(id), id);
+    CONTACT_CHECK(relation.allFinite() && constant.allFinite(), InputError, "constraint ", id, " of model part ",
+                  FullName(), " has a non-finite weight or constant",
+                  "\n  expected: finite numbers in the relation matrix and the constant vector");
     auto constraint = prototype.Create(id, std::move(master_dofs), std::move(slave_dofs), relation, constant);
     UpTheTree(*this, [&](ModelPart& part) { part.mConstraints.Insert(constraint); });
     return constraint;

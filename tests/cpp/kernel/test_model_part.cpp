@@ -1,5 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // ModelPart and Model: hierarchy, membership, dotted paths, ids and entity creation.
+#include <cmath>
+#include <string>
+
 #include <gtest/gtest.h>
 
 #include "contact_app/application.h"
@@ -103,6 +106,56 @@ TEST_F(ModelPartTest, CloneTimeStepAdvancesTimeStepAndBuffer) {
     EXPECT_NEAR(main.GetProcessInfo().GetValue(DELTA_TIME), 0.2, 1e-15);
     EXPECT_EQ(main.GetProcessInfo().GetValue(STEP), 2);
     EXPECT_DOUBLE_EQ(main.GetNode(1).GetSolutionStepValue(DISPLACEMENT_X, 1), 1.5);
+}
+
+TEST_F(ModelPartTest, NonFiniteTimeIsRefusedBeforeTheBuffersMove) {
+    ModelPart& main = model.GetModelPart("Main");
+    main.GetNode(1).FastGetSolutionStepValue(DISPLACEMENT_X) = 1.5;
+    const auto message = [&](double time) -> std::string {
+        try {
+            main.CloneTimeStep(time);
+        } catch (const InputError& error) {
+            return error.what();
+        }
+        return "";
+    };
+    EXPECT_NE(message(std::nan("")).find("CloneTimeStep(nan) on model part Main: the new time is not finite"),
+              std::string::npos);
+    EXPECT_NE(message(-INFINITY).find("the new time is not finite"), std::string::npos);
+    EXPECT_EQ(main.GetProcessInfo().GetValue(STEP), 0);
+    EXPECT_DOUBLE_EQ(main.GetNode(1).FastGetSolutionStepValue(DISPLACEMENT_X), 1.5);  // buffers not shifted
+    main.CloneTimeStep(1.7e308);
+    EXPECT_NE(message(-1.7e308).find("the step from the current TIME 1.7e+308 is not finite"), std::string::npos);
+    EXPECT_EQ(main.GetProcessInfo().GetValue(STEP), 1);
+}
+
+TEST_F(ModelPartTest, NonFiniteCoordinatesWeightsAndIdsBeyondTheRangeAreRefused) {
+    ModelPart& sub = model.GetModelPart("Main").CreateSubModelPart("Sub");
+    try {
+        sub.CreateNewNode(5, 0.0, std::nan(""), 0.0);
+        FAIL();
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("node 5 of model part Main.Sub has a non-finite coordinate (0, nan, 0)"),
+                  std::string::npos)
+            << error.what();
+    }
+    EXPECT_THROW(sub.CreateNewNode(6, INFINITY, 0.0, 0.0), InputError);
+    EXPECT_FALSE(sub.HasNode(5) || sub.HasNode(6));
+    try {
+        sub.CreateNewNode(9223372036854775808ULL, 0.0, 0.0, 0.0);
+        FAIL();
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("is beyond the largest id 9223372036854775807"), std::string::npos);
+    }
+    ModelPart& main = model.GetModelPart("Main");
+    for (const auto& node : main.Nodes()) node->AddDof(DISPLACEMENT_X);
+    EXPECT_THROW(main.CreateNewMasterSlaveConstraint("LinearMasterSlaveConstraint", 1, main.GetNode(1), DISPLACEMENT_X,
+                                                     main.GetNode(2), DISPLACEMENT_X, std::nan(""), 0.0),
+                 InputError);
+    EXPECT_THROW(main.CreateNewMasterSlaveConstraint("LinearMasterSlaveConstraint", 1, main.GetNode(1), DISPLACEMENT_X,
+                                                     main.GetNode(2), DISPLACEMENT_X, 1.0, INFINITY),
+                 InputError);
+    EXPECT_EQ(main.NumberOfMasterSlaveConstraints(), 0u);
 }
 
 TEST_F(ModelPartTest, MasterSlaveConstraintAppliesItsRelation) {

@@ -121,5 +121,12 @@ def test_process_argument_errors_are_input_errors() -> None:
         ca.NormalCheckProcess(part, length_proportion=-1.0)
     with pytest.raises(ca.InputError, match="stiffness_factor"):
         ca.ALMVariablesCalculationProcess(part, stiffness_factor=0.0)
+    nan, inf = float("nan"), float("inf")
+    with pytest.raises(ca.InputError, match="length_proportion is nan"):
+        ca.NormalCheckProcess(part, length_proportion=nan)
+    with pytest.raises(ca.InputError, match="check_threshold is nan"):
+        ca.NormalCheckProcess(part, check_threshold=nan)
+    with pytest.raises(ca.InputError, match="positive and finite"):
+        ca.ALMVariablesCalculationProcess(part, penalty_scale_factor=inf)
     with pytest.raises(ca.InputError, match="interface condition"):
         ca.ALMVariablesCalculationProcess(part).Execute()

@@ -221,3 +221,30 @@ def test_model_part_historical_variables_and_buffer(structure: ca.ModelPart) -> 
     assert node.GetSolutionStepValue(ca.VELOCITY_X) == 3.0
     structure.SetBufferSize(3)
     assert structure.GetBufferSize() == 3 and node.GetBufferSize() == 3
+
+
+@pytest.mark.parametrize("bad", [float("nan"), float("inf"), -float("inf")])
+def test_model_part_refuses_non_finite_coordinates_and_times(
+    structure: ca.ModelPart, bad: float
+) -> None:
+    with pytest.raises(ca.InputError, match="node 91 of model part .* has a non-finite coordinate"):
+        structure.CreateNewNode(91, 0.0, 0.0, bad)
+    assert not structure.HasNode(91)
+    with pytest.raises(ca.InputError, match="the new time is not finite"):
+        structure.CloneTimeStep(bad)
+    node = structure.CreateNewNode(92, 0.0, 0.0, 0.0)
+    for name in ("X", "Y", "Z", "X0", "Y0", "Z0"):
+        with pytest.raises(ca.InputError, match=f"coordinate {name.lower()} of node 92 set to"):
+            setattr(node, name, bad)
+    with pytest.raises(ca.InputError, match="coordinates of node 92 set to"):
+        node.SetCoordinates([0.0, bad, 0.0])
+    with pytest.raises(ca.InputError, match="initial coordinates of node 92"):
+        node.SetInitialCoordinates([bad, 0.0, 0.0])
+    with pytest.raises(ca.InputError, match="coordinate y of node 7"):
+        ca.Node(7, 0.0, bad, 0.0)
+    assert list(node.Coordinates()) == [0.0, 0.0, 0.0]
+
+
+def test_model_part_refuses_ids_beyond_what_outputs_store(structure: ca.ModelPart) -> None:
+    with pytest.raises(ca.InputError, match="beyond the largest id 9223372036854775807"):
+        structure.CreateNewNode(2**63, 0.0, 0.0, 0.0)
