@@ -4,7 +4,9 @@ An output process writes its first file before the first step (``json_output_pro
 it (``vtk_output_process``); a path that is one of the run's inputs would overwrite it silently,
 and a folder that cannot be created would be found only after the work. :func:`CheckOutputs`
 looks at every output path of the process lists when the analysis is created, before the mesh is
-read. Output paths outside the case folder stay allowed (the summary lists the files written).
+read, and so does the copy of the parameters written when ``echo_level`` > 1 (never over an input,
+and no output file written by two writers). Output paths outside the case folder stay allowed
+(the summary lists the files written).
 """
 
 from __future__ import annotations
@@ -21,6 +23,8 @@ from .process_factory import INPUT_PATH_KEYS
 #: Keys of process ``Parameters`` that name an output file, and those that name a folder.
 FILE_KEYS = ("output_file_name",)
 FOLDER_KEYS = ("output_path", "folder_name")
+#: Written to the working folder by ``Initialize`` when ``problem_data.echo_level`` > 1.
+PARAMETERS_ECHO = "ProjectParametersOutput.json"
 
 
 def _same(first: str, second: str) -> bool:
@@ -101,28 +105,60 @@ def CheckOutputs(
                 except InputError:
                     continue  # reported with its own message when the process is created
                 every_input.append((path, settings.Where(key)))
-    for settings in processes:
-        for key, value, is_folder in _outputs(settings):
-            resolved = paths.output_path(value)
-            for path, where in every_input:
-                if not is_folder and _same(resolved, path):
-                    raise InputError(
-                        f'the output file "{quote(value)}" is an input of this run\n'
-                        f"  where:    {settings.Where(key)}\n"
-                        f"  input:    {where}\n"
-                        "  expected: outputs that never overwrite the run's inputs\n"
-                        "  fix:      give the output another file name"
-                    )
-            folder = Path(resolved) if is_folder else Path(resolved).parent
-            if not is_folder and Path(resolved).is_dir():
-                problem: str | None = f'"{quote(value)}" is a folder, not a file'
-            else:
-                problem = _unwritable(folder)
-            if problem is not None:
+    # (where, value as written, resolved path, is a folder) of every output of the run.
+    outputs = [
+        (settings.Where(key), value, paths.output_path(value), is_folder)
+        for settings in processes
+        for key, value, is_folder in _outputs(settings)
+    ]
+    outputs += _parameters_echo(parameters)
+    written: dict[str, str] = {}
+    for where, value, resolved, is_folder in outputs:
+        for path, input_where in every_input:
+            if not is_folder and _same(resolved, path):
                 raise InputError(
-                    f'the output {"folder" if is_folder else "file"} "{quote(value)}" cannot '
-                    f"be written: {problem}\n"
-                    f"  where:    {settings.Where(key)}\n"
-                    "  expected: a path whose folder exists or can be created, and is writable\n"
-                    "  fix:      choose another output path"
+                    f'the output file "{quote(value)}" is an input of this run\n'
+                    f"  where:    {where}\n"
+                    f"  input:    {input_where}\n"
+                    "  expected: outputs that never overwrite the run's inputs\n"
+                    "  fix:      give the output another file name"
                 )
+        if not is_folder:
+            for other, other_where in written.items():
+                if _same(resolved, other) or os.path.abspath(resolved) == os.path.abspath(other):
+                    raise InputError(
+                        f'the output file "{quote(value)}" is written twice\n'
+                        f"  where:    {other_where}\n"
+                        f"  and:      {where}\n"
+                        "  expected: one writer per output file (the last one would win)\n"
+                        "  fix:      give one of the outputs another file name"
+                    )
+            written[resolved] = where
+        folder = Path(resolved) if is_folder else Path(resolved).parent
+        if not is_folder and Path(resolved).is_dir():
+            problem: str | None = f'"{quote(value)}" is a folder, not a file'
+        else:
+            problem = _unwritable(folder)
+        if problem is not None:
+            raise InputError(
+                f'the output {"folder" if is_folder else "file"} "{quote(value)}" cannot '
+                f"be written: {problem}\n"
+                f"  where:    {where}\n"
+                "  expected: a path whose folder exists or can be created, and is writable\n"
+                "  fix:      choose another output path"
+            )
+
+
+def _parameters_echo(parameters: Parameters) -> list[tuple[str, str, str, bool]]:
+    """The copy of the parameters that Initialize writes when echo_level > 1 (as Kratos does)."""
+    if not parameters.Has("problem_data"):
+        return []
+    problem_data = parameters["problem_data"]
+    if not (
+        problem_data.Has("echo_level")
+        and problem_data["echo_level"].IsInt()
+        and problem_data["echo_level"].GetInt() > 1
+    ):
+        return []
+    where = f"{problem_data.Where('echo_level')} (> 1: written to the working folder)"
+    return [(where, PARAMETERS_ECHO, os.path.abspath(PARAMETERS_ECHO), False)]

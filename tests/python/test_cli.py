@@ -705,6 +705,26 @@ UNTRUSTED_INPUTS: list[tuple[str, Callable[[Path], None], list[str]]] = [
         ["is an input of this run", "input:    the parameters file"],
     ),
     (
+        "output_written_twice",
+        _params(
+            lambda p: p["output_processes"].update(
+                twice=[
+                    {
+                        "python_module": "json_output_process",
+                        "kratos_module": "KratosMultiphysics",
+                        "Parameters": {"model_part_name": "Structure", "output_file_name": name},
+                    }
+                    for name in ("out.json", "./out.json")
+                ]
+            )
+        ),
+        [
+            'the output file "./out.json" is written twice',
+            "twice › [0] › Parameters › output_file_name",
+            "twice › [1] › Parameters › output_file_name",
+        ],
+    ),
+    (
         "output_folder_under_a_file",
         _process("output_processes", "vtk_output_process", output_path="case/plate.mdpa/vtk"),
         ["cannot be written", "is a file, not a folder", "extra › [0] › Parameters › output_path"],
@@ -735,6 +755,27 @@ def test_cli_run_untrusted_input_exits_two_naming_the_place(
         assert fragment in captured.err
     assert "step " not in captured.out  # nothing was solved
     assert all(path.read_bytes() == data for path, data in inputs.items())  # nothing overwritten
+
+
+def test_cli_run_parameters_echo_never_overwrites_the_parameters_file(
+    run_case: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    _problem(echo_level=2)(run_case)
+    echo = run_case / "ProjectParametersOutput.json"
+    (run_case / PARAMETERS).rename(echo)
+    original = echo.read_bytes()
+    monkeypatch.chdir(run_case)
+    assert cli.main(["run", "--quiet", echo.name]) == 2
+    err = capsys.readouterr().err
+    assert 'the output file "ProjectParametersOutput.json" is an input of this run' in err
+    assert "ProjectParametersOutput.json › problem_data › echo_level (> 1: written to" in err
+    assert "input:    the parameters file" in err
+    assert echo.read_bytes() == original
+    # From another working folder the echo is written there, next to nothing it could overwrite.
+    monkeypatch.chdir(run_case.parent)
+    assert cli.main(["run", "--quiet", f"case/{echo.name}"]) == 0
+    assert (run_case.parent / echo.name).is_file()
+    assert echo.read_bytes() == original
 
 
 def test_cli_run_messages_quote_huge_values_briefly_and_escape_nul(
