@@ -29,6 +29,19 @@ Eigen::Matrix<double, TDim, 1> PreviousDisplacement(const Node& node) {
     return node.FastGetSolutionStepValue(DISPLACEMENT, 1).head<TDim>();
 }
 
+/// This pair's share of slave node @p i: a_i / A_i with a_i = D_ii of the pair (dual basis) and A_i = NODAL_AREA, the
+/// sum over every pair of the node (explicit pass), so that the pairs' rows Q = M/D_ii assemble to the node's mortar
+/// row Σ_c M^c / Σ_c D^c_ii however many master faces a slave face overlaps. The reference weights each pair by
+/// 1/NODAL_PAUX (slave faces at the node), which counts a face overlapping two master faces twice; that weight is
+/// kept only where the node has no area yet (docs/theory/mortar.md §9).
+template <int TNS, int TNM>
+double PairShare(const Node& node, const MortarOperators<double, TNS, TNM>& operators, bool dual, int i) {
+    const double total = node.Has(NODAL_AREA) ? node.GetValue(NODAL_AREA) : 0.0;
+    if (dual && total > 0.0) return operators.D(i, i) / total;
+    const double paux = node.Has(NODAL_PAUX) ? node.GetValue(NODAL_PAUX) : 0.0;
+    return paux > 0.0 ? 1.0 / paux : 0.0;
+}
+
 }  // namespace
 
 #define MPC_TEMPLATE template <int TDim, int TNS, int TNM>
@@ -100,8 +113,6 @@ Eigen::Matrix<double, TNS, TNM> MPC_CLASS::ComputeQ(const Operators& operators, 
         if (!lu.isInvertible()) return Q;  // isolated pair (zero operators): no constraint
         Q = lu.solve(operators.M);
     }
-    for (int i = 0; i < TNS; ++i)
-        if (Q.row(i).minCoeff() < -NegativeEntryTolerance) Q.row(i).setZero();
     return Q;
 }
 
@@ -119,6 +130,7 @@ MPCConstraintRelation MPC_CLASS::ComputeConstraintRelation(const ProcessInfo& rC
     MPCConstraintRelation result;
     result.relation.setZero(TDim * TNS, TDim * TNM);
     result.constant.setZero(TDim * TNS);
+    result.slave_coupling.setZero(TDim * TNS, TDim * TNS);
     for (int i = 0; i < TNS; ++i) {
         const Node& node = slave[i];
         const bool active = IsActiveNode(node);
@@ -127,33 +139,41 @@ MPCConstraintRelation MPC_CLASS::ComputeConstraintRelation(const ProcessInfo& rC
                       node.Id(), " has NODAL_PAUX ", paux,
                       "\n  expected: the (positive) number of slave conditions containing the node",
                       "\n  fix: compute the nodal weights (the MPC contact strategy does) before updating the constraint");
-        const double weight = paux > 0.0 ? 1.0 / paux : 0.0;
+        const double weight = paux > 0.0 ? PairShare(node, operators, dual, i) : 0.0;
         const Eigen::Matrix<double, TDim, 1> n = normals.row(i).transpose();
-        if (active) {
-            // SLIP condition: slip nodes normal-only, stick nodes full; RIGID (tying): full; else frictionless.
-            // [BUG?] B6: a normal-only row u_s = n nᵀ(Q u_m) + c constrains the total slave displacement, so its
-            // tangential part is forced to zero as well; u_s = T u_m + c cannot express "normal part only", the
-            // documented relation is kept.
-            const bool normal_only = Is(SLIP) ? node.Is(SLIP) : !Is(RIGID);
-            for (int j = 0; j < TNM; ++j) {
-                if (normal_only) {
-                    for (int a = 0; a < TDim; ++a)
-                        for (int b = 0; b < TDim; ++b) {
-                            const double value = n[a] * n[b] * Q(i, j);
-                            if (std::abs(value) > 1.0e-12) result.relation(i * TDim + a, j * TDim + b) = weight * value;
-                        }
-                } else if (std::abs(Q(i, j)) > 1.0e-12) {
-                    for (int a = 0; a < TDim; ++a) result.relation(i * TDim + a, j * TDim + a) = weight * Q(i, j);
-                }
-            }
-        }
         // Gap carried by the constant: closing it needs n·(Δu1 − Q Δu2) = g̃/A from the previous displacements.
         const double area = node.Has(NODAL_AREA) && node.GetValue(NODAL_AREA) > 0.0 ? node.GetValue(NODAL_AREA) : 1.0;
         const double gap = node.FastGetSolutionStepValue(WEIGHTED_GAP);
         const Eigen::Matrix<double, TDim, 1> relative =
             PreviousDisplacement<TDim>(node) - (Q.row(i) * u2_previous).transpose();
         const double normal_constant = weight * (gap / area + n.dot(relative));
-        for (int a = 0; a < TDim; ++a) result.constant[i * TDim + a] = normal_constant * n[a];
+        // SLIP condition: slip nodes normal-only, stick nodes full; RIGID (tying): full; else frictionless.
+        const bool normal_only = Is(SLIP) ? node.Is(SLIP) : !Is(RIGID);
+        if (!normal_only || !active) {
+            // Full tie (or an inactive node, whose rows are pruned): u_s = Q u_m + c n.
+            if (active)
+                for (int j = 0; j < TNM; ++j)
+                    if (std::abs(Q(i, j)) > 1.0e-12)
+                        for (int a = 0; a < TDim; ++a) result.relation(i * TDim + a, j * TDim + a) = weight * Q(i, j);
+            for (int a = 0; a < TDim; ++a) result.constant[i * TDim + a] = normal_constant * n[a];
+            continue;
+        }
+        // Normal only: the one scalar row n·u_s = n·(Q u_m) + c, solved for the component a* with the largest |n_a|;
+        // the other slave components stay free DoFs (the tangential motion a slip or frictionless node needs). The
+        // reference's rows n nᵀ(Q u_m) on every component tie the tangential slave motion to zero on a tilted
+        // interface ([BUG?] B6).
+        Eigen::Index pivot = 0;
+        n.cwiseAbs().maxCoeff(&pivot);
+        const int row = i * TDim + static_cast<int>(pivot);
+        const double n_pivot = n[pivot];
+        for (int j = 0; j < TNM; ++j)
+            for (int b = 0; b < TDim; ++b) {
+                const double value = n[b] * Q(i, j) / n_pivot;
+                if (std::abs(value) > 1.0e-12) result.relation(row, j * TDim + b) = weight * value;
+            }
+        for (int b = 0; b < TDim; ++b)
+            if (b != pivot && std::abs(n[b]) > 1.0e-12) result.slave_coupling(row, i * TDim + b) = -weight * n[b] / n_pivot;
+        result.constant[row] = normal_constant / n_pivot;
     }
     return result;
 }
@@ -166,23 +186,31 @@ void MPC_CLASS::UpdateConstraint(const ProcessInfo& rCurrentProcessInfo) {
     const MPCConstraintRelation full = ComputeConstraintRelation(rCurrentProcessInfo);
     const Geometry& slave = GetParentGeometry();
     const Geometry& master = GetPairedGeometry();
+    // Columns: the master components, then the slave components a normal-only row depends on.
+    Matrix columns(full.relation.rows(), full.relation.cols() + full.slave_coupling.cols());
+    columns << full.relation, full.slave_coupling;
     std::vector<Eigen::Index> rows, cols;
     DofsVectorType slave_dofs, master_dofs;
-    for (Eigen::Index r = 0; r < full.relation.rows(); ++r)
+    for (Eigen::Index r = 0; r < columns.rows(); ++r)
         if (full.relation.row(r).cwiseAbs().sum() > PruneTolerance) {
             rows.push_back(r);
             slave_dofs.push_back(&slave[r / TDim].GetDof(*kDisplacementComponents[r % TDim]));
         }
-    for (Eigen::Index c = 0; c < full.relation.cols(); ++c)
-        if (full.relation.col(c).cwiseAbs().sum() > PruneTolerance) {
-            cols.push_back(c);
-            master_dofs.push_back(&master[c / TDim].GetDof(*kDisplacementComponents[c % TDim]));
-        }
+    for (Eigen::Index c = 0; c < columns.cols(); ++c) {
+        double sum = 0.0;
+        for (Eigen::Index r : rows) sum += std::abs(columns(r, c));
+        if (!(sum > PruneTolerance)) continue;
+        cols.push_back(c);
+        const bool on_master = c < full.relation.cols();
+        const Eigen::Index k = on_master ? c : c - full.relation.cols();
+        master_dofs.push_back(on_master ? &master[k / TDim].GetDof(*kDisplacementComponents[k % TDim])
+                                        : &slave[k / TDim].GetDof(*kDisplacementComponents[k % TDim]));
+    }
     Matrix relation(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(cols.size()));
     Vector constant(static_cast<Eigen::Index>(rows.size()));
     for (std::size_t r = 0; r < rows.size(); ++r) {
         constant[r] = full.constant[rows[r]];
-        for (std::size_t c = 0; c < cols.size(); ++c) relation(r, c) = full.relation(rows[r], cols[c]);
+        for (std::size_t c = 0; c < cols.size(); ++c) relation(r, c) = columns(rows[r], cols[c]);
     }
     constraint->SetDofList(slave_dofs, master_dofs, rCurrentProcessInfo);
     constraint->SetLocalSystem(relation, constant, rCurrentProcessInfo);
@@ -201,29 +229,34 @@ void MPC_CLASS::CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const Process
 }
 
 MPC_TEMPLATE
-void MPC_CLASS::CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo&) {
+void MPC_CLASS::CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo& rCurrentProcessInfo) {
     rRightHandSideVector.setZero(MatrixSize);
     if (!Is(SLIP)) return;
-    const double eps = std::numeric_limits<double>::epsilon();
     const Geometry& slave = GetParentGeometry();
+    bool any_slip = false;
+    for (int i = 0; i < TNS; ++i) any_slip = any_slip || (IsActiveNode(slave[i]) && slave[i].Is(SLIP));
+    if (!any_slip) return;
+    bool dual = false;
+    const Operators operators = CurrentOperators(rCurrentProcessInfo, dual);
+    const Eigen::Matrix<double, TNS, TNM> Q = ComputeQ(operators, dual);
     for (int i = 0; i < TNS; ++i) {
         const Node& node = slave[i];
-        if (!node.Is(SLIP)) continue;
-        const Eigen::Matrix<double, TDim, 1> force = node.FastGetSolutionStepValue(REACTION).head<TDim>();
-        const Eigen::Matrix<double, TDim, 1> n = node.FastGetSolutionStepValue(NORMAL).head<TDim>();
-        const double normal_force = force.dot(n);
-        const Eigen::Matrix<double, TDim, 1> tangential = force - normal_force * n;
-        Eigen::Matrix<double, TDim, 1> direction = Eigen::Matrix<double, TDim, 1>::Zero();
-        if (tangential.norm() > eps) {
-            direction = tangential.normalized();
-        } else {
-            const Array3 slip = node.SolutionStepsDataHas(WEIGHTED_SLIP) ? node.FastGetSolutionStepValue(WEIGHTED_SLIP)
-                                                                        : node.GetValue(WEIGHTED_SLIP);
-            if (slip.head<TDim>().norm() > eps) direction = slip.head<TDim>().normalized();
+        if (!IsActiveNode(node) || !node.Is(SLIP)) continue;
+        if (Q.row(i).cwiseAbs().sum() == 0.0) continue;  // this pair does not overlap the node
+        const double share = PairShare(node, operators, dual, i);
+        // The normal constraint force of the last iteration (explicit, as the reference); the direction is the slip
+        // direction the criteria keep in TANGENT_XI: the friction on the slave follows the master's relative motion.
+        const Eigen::Matrix<double, TDim, 1> n = node.FastGetSolutionStepValue(NORMAL).head<TDim>().normalized();
+        const double normal_force = node.FastGetSolutionStepValue(REACTION).head<TDim>().dot(n);
+        Eigen::Matrix<double, TDim, 1> direction = node.GetValue(TANGENT_XI).head<TDim>();
+        direction -= direction.dot(n) * n;
+        if (!(direction.norm() > 0.0) || !(normal_force < 0.0)) continue;
+        const Eigen::Matrix<double, TDim, 1> f =
+            (-node.GetValue(FRICTION_COEFFICIENT) * normal_force * share) * direction.normalized();
+        for (int a = 0; a < TDim; ++a) {
+            rRightHandSideVector[TDim * TNM + i * TDim + a] += f[a];
+            for (int j = 0; j < TNM; ++j) rRightHandSideVector[j * TDim + a] -= Q(i, j) * f[a];
         }
-        // Explicit Coulomb force −μ (F·n) e on the slave rows (the reference marks its sign "TODO: Check sign").
-        const Eigen::Matrix<double, TDim, 1> f = -node.GetValue(FRICTION_COEFFICIENT) * normal_force * direction;
-        for (int a = 0; a < TDim; ++a) rRightHandSideVector[TDim * TNM + i * TDim + a] += f[a];
     }
 }
 

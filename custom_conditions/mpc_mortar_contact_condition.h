@@ -11,6 +11,9 @@ namespace contact_app {
 struct MPCConstraintRelation {
     Matrix relation;  ///< d n_s × d n_m
     Vector constant;  ///< d n_s
+    /// d n_s × d n_s: a normal-only row of slave node i (component a* = argmax |n_a|) depends on the node's other
+    /// components, n·u_s = n·(Q u_m) + c solved for u_s,a* (docs/theory/mortar.md §9).
+    Matrix slave_coupling;
 };
 
 /// Mortar contact imposed through a multipoint constraint (Kratos MPCMortarContactCondition,
@@ -19,16 +22,16 @@ struct MPCConstraintRelation {
 /// ContactMasterSlaveConstraint stored in its CONSTRAINT_POINTER value, u_s = T u_m + c on the DISPLACEMENT DoFs,
 /// which the condition rebuilds from Q = D⁻¹M (current configuration, dual basis when Ae succeeds) in
 /// Initialize, InitializeSolutionStep (unless BLOCKED) and InitializeNonLinearIteration (only if the condition
-/// Is(INTERACTION)): frictionless (normal-only rows n nᵀ Q), frictional (SLIP condition: slip nodes normal-only,
-/// stick nodes full Q) or tying (RIGID condition: full Q), each row weighted by 1/NODAL_PAUX, then the rows and
-/// columns with an absolute sum ≤ 1e−4 are pruned and the constraint DoF lists reset to the surviving ones.
+/// Is(INTERACTION)): frictionless (normal-only: one scalar row n·u_s = n·(Q u_m) + c per node, solved for the
+/// component with the largest |n_a|, the other slave components stay free), frictional (SLIP condition: slip nodes
+/// normal-only, stick nodes full Q) or tying (RIGID condition: full Q), each row weighted by 1/NODAL_PAUX, then the
+/// rows and columns with an absolute sum ≤ 1e−4 are pruned and the constraint DoF lists reset to the surviving ones
+/// (docs/theory/mortar.md §9).
 /// Registers MPCMortarContactCondition{2D2N,3D3N,3D4N,3D3N4N,3D4N3N}; local system [master u, slave u].
 template <int TDim, int TNumNodes, int TNumNodesMaster = TNumNodes>
 class MPCMortarContactCondition : public PairedCondition {
 public:
     static constexpr int MatrixSize = TDim * (TNumNodes + TNumNodesMaster);
-    /// A row of Q with an entry below −this is zeroed (a negative weight would pull the slave away).
-    static constexpr double NegativeEntryTolerance = 1.0e-8;
     /// Rows / columns of T whose absolute sum is at most this are pruned from the constraint.
     static constexpr double PruneTolerance = 1.0e-4;
     using Operators = MortarOperators<double, TNumNodes, TNumNodesMaster>;
@@ -51,8 +54,10 @@ public:
     void CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
                               const ProcessInfo& rCurrentProcessInfo) override;
     void CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) override;
-    /// If Is(SLIP): every SLIP slave node i gets f_i = −μ_i (F_i·n_i) e_i on its rows, F = historical REACTION,
-    /// n = NORMAL, μ = FRICTION_COEFFICIENT (non-historical), e = F_τ/|F_τ| (else WEIGHTED_SLIP/|·|, else 0).
+    /// If Is(SLIP): every SLIP slave node i gets its share of the Coulomb force f_i = −μ_i (F_i·n_i) e_i / NODAL_PAUX on
+    /// its rows and −Q_ij f_i on the master rows, F = historical REACTION (the normal constraint force of the last
+    /// iteration), n = NORMAL, μ = FRICTION_COEFFICIENT (non-historical), e = TANGENT_XI (the slip direction the
+    /// criteria keep, docs/theory/mortar.md §9).
     void CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo& rCurrentProcessInfo) override;
     void CalculateMassMatrix(Matrix& rMassMatrix, const ProcessInfo& rCurrentProcessInfo) override;
     void CalculateDampingMatrix(Matrix& rDampingMatrix, const ProcessInfo& rCurrentProcessInfo) override;
@@ -79,7 +84,11 @@ public:
     /// @brief T and c of the pair before pruning (kratos_residuals.md §5.2), from the current coordinates.
     /// @throws InputError if an active slave node has no positive NODAL_PAUX
     MPCConstraintRelation ComputeConstraintRelation(const ProcessInfo& rCurrentProcessInfo) const;
-    /// @brief Q = D⁻¹M with the negative-row filter (exposed for the tests).
+    /// @brief Q = D⁻¹M of the pair (exposed for the tests). The reference zeroes a row with a negative entry; the dual
+    ///        basis puts one in a row of every pair as soon as the faces slide by any amount, and the node then lost
+    ///        that pair's share of its constraint and of its friction (docs/theory/mortar.md §9). Weighted by the area
+    ///        shares, the pairs' rows assemble to the node's mortar row Σ_c M^c / Σ_c D^c_ii, negative entries
+    ///        included.
     static Eigen::Matrix<double, TNumNodes, TNumNodesMaster> ComputeQ(const Operators& operators, bool dual);
     /// Rebuilds the constraint of CONSTRAINT_POINTER (no-op without one): ComputeConstraintRelation, pruning,
     /// SetDofList and SetLocalSystem.

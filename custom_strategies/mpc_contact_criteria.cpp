@@ -17,6 +17,11 @@ constexpr double kDefaultReactionCheckFactor = 1.0e-12;
 /// A gap counts as a penetration below −this × the node's length scale: a gap the constraint has just closed is
 /// zero up to round-off, and its sign must not decide the contact status.
 constexpr double kGapTolerance = 1.0e-10;
+/// A slip of the step (WEIGHTED_SLIP / area) below this × the node's length scale is round-off: its direction means
+/// nothing and does not change the stick/slip state.
+constexpr double kSlipTolerance = 1.0e-12;
+/// A slip direction (unit vector) that changed by more than this in an iteration has not converged (≈ 0.006°).
+constexpr double kDirectionTolerance = 1.0e-4;
 
 /// Largest YOUNG_MODULUS of the elements' properties (0 without one): the scale of the tension tolerance.
 double YoungModulus(const ModelPart& rModelPart) {
@@ -130,17 +135,41 @@ bool MPCContactCriteria::PostCriteria(ModelPart& rModelPart, DofsArrayType&, con
             node->SetValue(CONTACT_FORCE, Array3(normal_force * n / weight));
             continue;
         }
-        node->SetValue(CONTACT_FORCE, Array3(force / weight));
-        const double tangential = (force - normal_force * n).norm();
+        const Array3 tangential_force = force - normal_force * n;
         const double mu = node->Has(FRICTION_COEFFICIENT) ? node->GetValue(FRICTION_COEFFICIENT) : 0.0;
-        // B9 done right: |F_τ| ≤ −μ F·n compares two forces (equivalently two tractions over the same area).
-        // μ = 0 is frictionless: always slip (the reference's 0 ≤ 0 would stick a node without tangential force).
-        const bool stick = mu > 0.0 && tangential <= -mu * normal_force;
-        const bool was_slip = node->Is(SLIP);
-        if (was_active && was_slip == stick) ++mSlipFlips;
-        node->Set(SLIP, !stick);
-        if (!stick) ++mSlipNodes;
-        node->SetValue(TANGENTIAL_CONTACT_STRESS, stick ? tangential / lumped_area : -mu * pressure);
+        const bool was_slip = was_active && node->Is(SLIP);
+        // The slip of the step, master relative to slave (+WEIGHTED_SLIP): the friction on the slave follows it.
+        Array3 slip = node->SolutionStepsDataHas(WEIGHTED_SLIP) ? node->FastGetSolutionStepValue(WEIGHTED_SLIP)
+                                                                  : Array3(Array3::Zero());
+        slip -= slip.dot(n) * n;
+        const bool slip_measurable = slip.norm() > kSlipTolerance * area * length;
+        const Array3 previous = node->GetValue(TANGENT_XI);
+        bool slipping = false;
+        Array3 direction = previous;
+        if (!(mu > 0.0)) {
+            slipping = true;  // frictionless (the reference's 0 ≤ 0 would stick a node without tangential force)
+        } else if (!was_slip) {
+            // Stick → slip when the stick force leaves the cone (B9 done right: two forces); the friction keeps
+            // the stick force's direction.
+            slipping = tangential_force.norm() > -mu * normal_force;
+            if (slipping) direction = tangential_force / tangential_force.norm();
+        } else if (slip_measurable) {
+            // Slip → stick when the node moved against the friction it was given (the force overshot).
+            slipping = slip.dot(previous) > 0.0;
+            if (slipping) direction = slip / slip.norm();
+        } else {
+            slipping = true;  // no slip measured yet: keep the direction of the transition
+        }
+        if (was_active && was_slip != slipping) ++mSlipFlips;
+        // A slip direction that still turns is not converged either (docs/theory/mortar.md §9).
+        if (slipping && was_slip && previous.norm() > 0.0 && (direction - previous).norm() > kDirectionTolerance)
+            ++mSlipFlips;
+        node->Set(SLIP, slipping);
+        node->SetValue(TANGENT_XI, slipping ? direction : Array3(Array3::Zero()));
+        if (slipping) ++mSlipNodes;
+        const Array3 friction = slipping && mu > 0.0 ? Array3(-mu * normal_force * direction) : tangential_force;
+        node->SetValue(CONTACT_FORCE, Array3((normal_force * n + friction) / weight));
+        node->SetValue(TANGENTIAL_CONTACT_STRESS, slipping ? -mu * pressure : tangential_force.norm() / lumped_area);
     }
     if (computing != nullptr) SyncPairsAndConstraints(*computing);
     info.SetValue(ACTIVE_SET_CONVERGED, mActiveFlips == 0);

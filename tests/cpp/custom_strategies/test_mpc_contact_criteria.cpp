@@ -171,9 +171,15 @@ TEST(MPCContactCriteria, FrictionalStickSlipComparesForcesWithForces) {
     // Tractions (NODAL_MAUX = 1 here, so the values are also the forces): stick |F_τ|/A, slip −μ (F·n)/A.
     EXPECT_NEAR(f.SlaveNode(1).GetValue(TANGENTIAL_CONTACT_STRESS), 0.3, 1e-12);
     EXPECT_NEAR(f.SlaveNode(2).GetValue(TANGENTIAL_CONTACT_STRESS), 0.5, 1e-12);
-    // Frictional CONTACT_FORCE = F / NODAL_PAUX.
-    EXPECT_NEAR((f.SlaveNode(2).GetValue(CONTACT_FORCE) - f.SlaveNode(2).FastGetSolutionStepValue(REACTION)).norm(),
+    // Frictional CONTACT_FORCE = (normal force + friction) / NODAL_PAUX: stick, the reaction; slip, the Coulomb force
+    // μ|F·n| along the stick force it replaces (0.5 of the 0.7).
+    EXPECT_NEAR((f.SlaveNode(1).GetValue(CONTACT_FORCE) - f.SlaveNode(1).FastGetSolutionStepValue(REACTION)).norm(),
                 0.0, 1e-12);
+    const Array3 reaction = f.SlaveNode(2).FastGetSolutionStepValue(REACTION);
+    const Array3 tangential = reaction - reaction.dot(f.SlaveNode(2).FastGetSolutionStepValue(NORMAL)) *
+                                             f.SlaveNode(2).FastGetSolutionStepValue(NORMAL);
+    EXPECT_NEAR((f.SlaveNode(2).GetValue(CONTACT_FORCE) - (reaction - tangential * (0.2 / 0.7))).norm(), 0.0, 1e-12);
+    EXPECT_NEAR((f.SlaveNode(2).GetValue(TANGENT_XI) - tangential / tangential.norm()).norm(), 0.0, 1e-12);
     EXPECT_TRUE(f.Post());  // same forces: no flip
     EXPECT_EQ(f.criteria.LastSlipFlips(), 0u);
 }

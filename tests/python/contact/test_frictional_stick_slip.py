@@ -56,6 +56,8 @@ BLOCK_DIVISIONS_3D = (4, 4, 2)
 MATCHING_3D = (12, 8, 4)
 NON_MATCHING_3D = (10, 7, 4)
 TOLERANCE = 1.0e-10  # residual and increment ratios of the contact criteria
+#: The multipoint-constraint route (mpc_contact_process, mpc_contact_settings) in run_stick_slip.
+MPC = "MPCContactFrictional"
 
 
 @dataclass
@@ -270,6 +272,9 @@ def _parameters(
         for k, (a, b) in enumerate(zip(slides[:-1], slides[1:], strict=True), start=1)
     )
     process = "alm_contact_process" if mortar_type.startswith("ALM") else "penalty_contact_process"
+    mpc = mortar_type == MPC
+    if mpc:
+        process = "mpc_contact_process"
     return {
         "problem_data": {
             "problem_name": "stick_slip",
@@ -291,9 +296,13 @@ def _parameters(
                 "input_filename": str(directory / "stick_slip"),
             },
             "material_import_settings": {"materials_filename": str(directory / "materials.json")},
-            "contact_settings": {"mortar_type": mortar_type},
+            **(
+                {"mpc_contact_settings": {"contact_type": "Frictional"}}
+                if mpc
+                else {"contact_settings": {"mortar_type": mortar_type}}
+            ),
             "time_stepping": {"time_step": 1.0},
-            "convergence_criterion": "contact_residual_criterion",
+            "convergence_criterion": "residual_criterion" if mpc else "contact_residual_criterion",
             "residual_relative_tolerance": residual_tolerance,
             "residual_absolute_tolerance": 1.0e-12,
             "displacement_relative_tolerance": TOLERANCE,
@@ -601,6 +610,50 @@ def test_penalty_frictional_converges_and_slides_with_mu_times_the_normal_force(
     assert full_slip.slipping == full_slip.slave_nodes
     bound = _geometric_bound(full_slip)
     assert abs(full_slip.tangential_force / (MU * full_slip.applied_load) - 1.0) <= bound
+
+
+@pytest.mark.parametrize(
+    "foundation_divisions",
+    [pytest.param(MATCHING, id="matching"), pytest.param(NON_MATCHING, id="non_matching")],
+)
+def test_mpc_frictional_sticks_and_slides_with_mu_times_the_normal_force(
+    foundation_divisions: tuple[int, int], tmp_path: Path
+) -> None:
+    """Friction through multipoint constraints (mpc_contact_process, contact_type Frictional).
+
+    A slipping node keeps only its normal row n.u_s = n.(Q u_m) + c and gets the Coulomb force
+    mu |F.n| along its slip, spread to the master by Q (docs/theory/mortar.md section 9). Before,
+    its tangential DoFs stayed tied, the force came from the tangential reaction (noise on a free
+    DoF), every pair added it in full and the dual basis' negative entries dropped half the
+    constraint rows of a sliding pair: the slip step stopped at 30 iterations with
+    F_t = 0.18 mu N. Measured: stick steps equal to ALM's (matching: F_t = 1.612334549 both),
+    slip F_t/(mu N) - 1 = 6e-9 / 4e-8 (matching / non-matching) in 10 and 3 iterations: the normal
+    force of the Coulomb bound is the reaction of the last iteration (explicit, as the reference).
+    """
+    states = run_stick_slip(tmp_path / "mpc", MPC, foundation_divisions=foundation_divisions)
+    alm = run_stick_slip(tmp_path / "alm", foundation_divisions=foundation_divisions)
+    for state in states:
+        assert state.record.converged, f"step at t = {state.record.time}"
+        assert state.record.iterations <= 12
+        assert state.base_reaction == pytest.approx(state.applied_load, rel=1.0e-9)
+        assert state.active == state.slave_nodes
+    # Both tie the stuck slave to the mortar projection of the master: equal on the matching
+    # interface (1.612334549 both); non-matching 1.4e-5 apart (measured at t = 2).
+    agreement = 1.0e-9 if foundation_divisions == MATCHING else 1.0e-4
+    for step in (STICK_STEP, 3):
+        assert states[step - 1].slipping == 0
+        assert states[step - 1].tangential_force == pytest.approx(
+            alm[step - 1].tangential_force, rel=agreement
+        )
+        mpc_force, alm_force = states[step - 1].tangential_force, alm[step - 1].tangential_force
+        print(f"t = {step}: F_t {mpc_force} against ALM's {alm_force}")
+    if foundation_divisions == MATCHING:
+        stick = states[STICK_STEP - 1]
+        assert stick.max_tangential_mismatch < 1.0e-9 * stick.max_tangential_displacement
+    for step in SLIP_STEPS:
+        state = states[step - 1]
+        assert state.slipping == state.slave_nodes
+        assert abs(state.tangential_force / (MU * state.applied_load) - 1.0) <= 1.0e-7
 
 
 def test_friction_coefficient_of_the_contact_process_reaches_the_nodes(tmp_path: Path) -> None:
