@@ -29,15 +29,16 @@ Eigen::Matrix<double, TDim, 1> PreviousDisplacement(const Node& node) {
     return node.FastGetSolutionStepValue(DISPLACEMENT, 1).head<TDim>();
 }
 
-/// This pair's share of slave node @p i: a_i / A_i with a_i = D_ii of the pair (dual basis) and A_i = NODAL_AREA, the
-/// sum over every pair of the node (explicit pass), so that the pairs' rows Q = M/D_ii assemble to the node's mortar
-/// row Σ_c M^c / Σ_c D^c_ii however many master faces a slave face overlaps. The reference weights each pair by
-/// 1/NODAL_PAUX (slave faces at the node), which counts a face overlapping two master faces twice; that weight is
-/// kept only where the node has no area yet (docs/theory/mortar.md §9).
+/// This pair's share of slave node @p i: a_i / A_i with a_i = Σ_k D_ik = ∫N_i over the pair's overlap and A_i =
+/// NODAL_AREA, the sum over every pair of the node (explicit pass), so that the pairs' rows Q = D⁻¹M assemble to the
+/// node's mortar row (Σ_c M^c / Σ_c D^c_ii with dual multipliers) however many master faces a slave face overlaps. The
+/// reference weights each pair by 1/NODAL_PAUX (slave faces at the node), which counts a face overlapping two master
+/// faces twice (a sliver left by sliding is enough); that weight is kept only where the node has no area yet
+/// (docs/theory/mortar.md §9).
 template <int TNS, int TNM>
-double PairShare(const Node& node, const MortarOperators<double, TNS, TNM>& operators, bool dual, int i) {
+double PairShare(const Node& node, const MortarOperators<double, TNS, TNM>& operators, int i) {
     const double total = node.Has(NODAL_AREA) ? node.GetValue(NODAL_AREA) : 0.0;
-    if (dual && total > 0.0) return operators.D(i, i) / total;
+    if (total > 0.0) return operators.D.row(i).sum() / total;
     const double paux = node.Has(NODAL_PAUX) ? node.GetValue(NODAL_PAUX) : 0.0;
     return paux > 0.0 ? 1.0 / paux : 0.0;
 }
@@ -139,7 +140,7 @@ MPCConstraintRelation MPC_CLASS::ComputeConstraintRelation(const ProcessInfo& rC
                       node.Id(), " has NODAL_PAUX ", paux,
                       "\n  expected: the (positive) number of slave conditions containing the node",
                       "\n  fix: compute the nodal weights (the MPC contact strategy does) before updating the constraint");
-        const double weight = paux > 0.0 ? PairShare(node, operators, dual, i) : 0.0;
+        const double weight = paux > 0.0 ? PairShare(node, operators, i) : 0.0;
         const Eigen::Matrix<double, TDim, 1> n = normals.row(i).transpose();
         // Gap carried by the constant: closing it needs n·(Δu1 − Q Δu2) = g̃/A from the previous displacements.
         const double area = node.Has(NODAL_AREA) && node.GetValue(NODAL_AREA) > 0.0 ? node.GetValue(NODAL_AREA) : 1.0;
@@ -243,7 +244,7 @@ void MPC_CLASS::CalculateRightHandSide(Vector& rRightHandSideVector, const Proce
         const Node& node = slave[i];
         if (!IsActiveNode(node) || !node.Is(SLIP)) continue;
         if (Q.row(i).cwiseAbs().sum() == 0.0) continue;  // this pair does not overlap the node
-        const double share = PairShare(node, operators, dual, i);
+        const double share = PairShare(node, operators, i);
         // The normal constraint force of the last iteration (explicit, as the reference); the direction is the slip
         // direction the criteria keep in TANGENT_XI: the friction on the slave follows the master's relative motion.
         const Eigen::Matrix<double, TDim, 1> n = node.FastGetSolutionStepValue(NORMAL).head<TDim>().normalized();
@@ -316,7 +317,7 @@ void MPC_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) 
     if (result.isolated) return Set(ISOLATED, true);
     for (int j = 0; j < TNS; ++j) {
         slave[j].FastGetSolutionStepValue(WEIGHTED_GAP) += result.weighted_gap[j];
-        if (result.dual) slave[j].SetValue(NODAL_AREA, slave[j].GetValue(NODAL_AREA) + result.nodal_area[j]);
+        slave[j].SetValue(NODAL_AREA, slave[j].GetValue(NODAL_AREA) + result.nodal_area[j]);
         if (slip) slave[j].FastGetSolutionStepValue(WEIGHTED_SLIP).head<TDim>() += result.weighted_slip.row(j).transpose();
     }
 }

@@ -51,7 +51,7 @@ ExplicitMortarContribution<T, TDim, TNS> ComputeExplicitMortarContribution(
     result.isolated = false;
     result.dual = pair.dual.dual;
     result.weighted_gap = WeightedGap<TDim, TNS, TNM, T, TNormal>(pair.operators, x1, x2, normals);
-    if (options.compute_nodal_area && result.dual) result.nodal_area = pair.operators.D.diagonal();
+    if (options.compute_nodal_area) result.nodal_area = pair.operators.D.rowwise().sum();
     return result;
 }
 
@@ -70,7 +70,7 @@ ExplicitMortarContribution<T, TDim, TNS> ComputeExplicitFrictionalMortarContribu
     result.weighted_gap = WeightedGap<TDim, TNS, TNM, T, TNormal>(pair.operators, x1, x2, normals);
     result.weighted_slip = WeightedSlip<TDim, TNS, TNM, T, TNormal>(pair.operators, previous, x1, x2, x1_previous,
                                                                    x2_previous, normals, delta_time, objective);
-    if (options.compute_nodal_area && result.dual) result.nodal_area = pair.operators.D.diagonal();
+    if (options.compute_nodal_area) result.nodal_area = pair.operators.D.rowwise().sum();
     return result;
 }
 

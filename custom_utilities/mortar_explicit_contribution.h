@@ -19,7 +19,7 @@ struct ExplicitMortarContribution {
 /// Options of the explicit contributions (Kratos MortarExplicitContributionUtilities arguments).
 struct ExplicitContributionOptions {
     bool dual_lm = true;             ///< use dual multipliers when Ae succeeds
-    bool compute_nodal_area = false; ///< NODAL_AREA_i += D_ii (dual only)
+    bool compute_nodal_area = false; ///< NODAL_AREA_i += Σ_k D_ik = ∫N_i over the overlap (any basis)
 };
 
 /// @brief g̃_i = −n_i·(D x1 − M x2)_i (the reference's sign: positive = open gap).

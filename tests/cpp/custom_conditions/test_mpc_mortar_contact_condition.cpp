@@ -299,7 +299,7 @@ TEST(MPCMortarContactCondition, PruningSetsTheConstraintDofListsAndReducedSystem
     EXPECT_EQ(&slaves[0]->GetNode(), &p.Slave()[0]);
     ASSERT_EQ(masters.size(), 1u);
     EXPECT_EQ(&masters[0]->GetNode(), &p.Master()[1]);
-    p.SetPaux(2.0e4);  // w = 5e−5 < 1e−4
+    p.SetPaux(1.0e13);  // w = 1e−13 < 1e−12
     p.pair->InitializeSolutionStep(info);
     p.constraint->GetDofList(slaves, masters, info);
     EXPECT_TRUE(slaves.empty());
