@@ -212,10 +212,8 @@ class ALMContactProcess(SearchBaseProcess):
                 "slip_augmentation_coefficient"
             ].GetDouble()
             info[ca.SLIP_THRESHOLD] = self.settings["slip_threshold"].GetDouble()
-        for key, properties in self.pair_properties.items():
-            mu = self.settings["friction_coefficients"][key].GetDouble()
-            if mu > 0.0 or not properties.Has(ca.FRICTION_COEFFICIENT):
-                properties[ca.FRICTION_COEFFICIENT] = mu
+        self._assign_friction_coefficients()
+        for properties in self.pair_properties.values():
             if self.axisymmetric and not properties.Has(ca.THICKNESS):
                 properties[ca.THICKNESS] = 1.0
 

@@ -91,10 +91,7 @@ class MPCContactProcess(SearchBaseProcess):
             part.Set(ca.CONTACT, True)
             part.Set(ca.SLIP, self.is_frictional)
             part.Set(ca.RIGID, self.is_rigid)
-        for key, properties in self.pair_properties.items():
-            mu = self.settings["friction_coefficients"][key].GetDouble()
-            if mu > 0.0 or not properties.Has(ca.FRICTION_COEFFICIENT):
-                properties[ca.FRICTION_COEFFICIENT] = mu
+        self._assign_friction_coefficients()
 
     def _initialize_search_conditions(self) -> None:
         _core.ALMFastInit(self.contact_model_part).Execute()

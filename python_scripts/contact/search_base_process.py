@@ -344,6 +344,16 @@ class SearchBaseProcess(Process):
     def _initialize_search_values(self) -> None:
         self.main_model_part.ProcessInfo[ca.DISTANCE_THRESHOLD] = 1.0e24
 
+    def _assign_friction_coefficients(self) -> None:
+        """Set FRICTION_COEFFICIENT of each pair's properties (docs/running.md, Friction).
+
+        ``friction_coefficients`` when positive, else the materials' value.
+        """
+        for key, properties in self.pair_properties.items():
+            mu = self.settings["friction_coefficients"][key].GetDouble()
+            if mu > 0.0 or not properties.Has(ca.FRICTION_COEFFICIENT):
+                properties[ca.FRICTION_COEFFICIENT] = mu
+
     def _initialize_problem_parameters(self) -> None:
         """Penalty / scale factor and the like (ALM and penalty processes)."""
 
