@@ -3,11 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iostream>
 #include <limits>
+#include <unordered_map>
+#include <vector>
 
 #include "contact_app/application.h"
 #include "contact_app/kernel/exceptions.h"
+#include "contact_app/kernel/element.h"
 #include "contact_app/kernel/model_part.h"
 #include "custom_utilities/contact_utilities.h"
 
@@ -30,6 +32,48 @@ struct SideSums {
     double MeanLength() const { return length / (area + kTolerance); }
 };
 
+/// YOUNG_MODULUS of a face: its own properties, else those of the solid element it bounds (the element holding all
+/// its nodes; a real model leaves the interface's properties to the bodies). @p elements_of lists the elements of each
+/// node of the root part, built on first use.
+class FaceModulus {
+public:
+    explicit FaceModulus(const ModelPart& root) : mrRoot(root) {}
+
+    /// The modulus, or NaN if neither the face nor an adjacent element has one.
+    double operator()(const Condition& condition) {
+        const Properties::Pointer& properties = condition.pGetProperties();
+        if (properties && properties->Has(YOUNG_MODULUS)) return properties->GetValue(YOUNG_MODULUS);
+        const Geometry& face = condition.GetGeometry();
+        if (face.size() == 0) return std::numeric_limits<double>::quiet_NaN();
+        if (mElementsOf.empty()) BuildNodeToElements();
+        const auto found = mElementsOf.find(&face[0]);
+        if (found == mElementsOf.end()) return std::numeric_limits<double>::quiet_NaN();
+        for (const Element* element : found->second) {
+            if (!element->pGetProperties() || !element->GetProperties().Has(YOUNG_MODULUS)) continue;
+            const Geometry& solid = element->GetGeometry();
+            bool bounds = true;
+            for (std::size_t i = 0; i < face.size() && bounds; ++i) {
+                bool has = false;
+                for (std::size_t k = 0; k < solid.size() && !has; ++k) has = &solid[k] == &face[i];
+                bounds = has;
+            }
+            if (bounds) return element->GetProperties().GetValue(YOUNG_MODULUS);
+        }
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+
+private:
+    void BuildNodeToElements() {
+        for (const auto& element : mrRoot.Elements()) {
+            const Geometry& solid = element->GetGeometry();
+            for (std::size_t k = 0; k < solid.size(); ++k) mElementsOf[&solid[k]].push_back(element.get());
+        }
+    }
+
+    const ModelPart& mrRoot;
+    std::unordered_map<const Node*, std::vector<const Element*>> mElementsOf;
+};
+
 }  // namespace
 
 ALMVariablesCalculationProcess::ALMVariablesCalculationProcess(ModelPart& model_part, double stiffness_factor,
@@ -45,18 +89,21 @@ ALMVariablesCalculationProcess::ALMVariablesCalculationProcess(ModelPart& model_
 
 void ALMVariablesCalculationProcess::Execute() {
     SideSums slave, master;
-    bool warned = false;
+    FaceModulus face_modulus(mrModelPart.GetRootModelPart());
     for (const auto& condition : mrModelPart.Conditions()) {
         const Geometry& geometry = condition->GetGeometry();
         if (geometry.NumberOfGeometryParts() != 0) continue;
-        const Properties::Pointer& properties = condition->pGetProperties();
-        const bool has_modulus = properties && properties->Has(YOUNG_MODULUS);
-        if (!has_modulus && !warned) {
-            std::cerr << "[WARNING] ALMVariablesCalculationProcess: condition " << condition->Id() << " of model part "
-                      << mrModelPart.FullName() << " has no YOUNG_MODULUS in its properties; 0 is used\n";
-            warned = true;
-        }
-        const double young_modulus = has_modulus ? properties->GetValue(YOUNG_MODULUS) : 0.0;
+        // The reference uses 0 (and then a penalty of 1) for a face without YOUNG_MODULUS, which on a steel press fit
+        // is an ALM penalty 1e5 times too soft; the body the face bounds knows its modulus.
+        const double young_modulus = face_modulus(*condition);
+        CONTACT_CHECK(std::isfinite(young_modulus), InputError, "ALMVariablesCalculationProcess: condition ",
+                      condition->Id(), " of model part ", mrModelPart.FullName(),
+                      " has no YOUNG_MODULUS, neither in its properties (id ",
+                      condition->pGetProperties() ? condition->GetProperties().Id() : 0,
+                      ") nor in those of an element it bounds",
+                      "\n  expected: the modulus of the body the interface belongs to",
+                      "\n  fix: give the body's elements (or the interface's properties) a YOUNG_MODULUS in the "
+                      "materials file, or give the penalty yourself: \"advance_ALM_parameters\": {\"manual_ALM\": true, \"penalty\": ..., \"scale_factor\": ...}");
         const double area = geometry.DomainSize();
         double nodal_length_sum = 0.0;
         for (std::size_t i = 0; i < geometry.size(); ++i) nodal_length_sum += ContactUtilities::NodalH(geometry[i]);

@@ -69,6 +69,37 @@ TEST(ALMProcesses, test_alm_variables_follow_the_stiffness_formula) {
     EXPECT_THROW(ALMVariablesCalculationProcess(part, 0.0), InputError);
 }
 
+TEST(ALMProcesses, test_a_face_without_modulus_takes_the_one_of_the_element_it_bounds) {
+    Model model;
+    ModelPart& part = TwoSidedInterface(model);
+    const double reference_penalty = [&] {
+        ALMVariablesCalculationProcess(part).Execute();
+        return part.GetProcessInfo().GetValue(INITIAL_PENALTY);
+    }();
+    // The slave face gets a properties id without a modulus (as real models leave the interface's properties to
+    // the bodies); the quadrilateral 1-2-6-5 below it carries E = 100.
+    auto bare = part.CreateNewProperties(5);
+    part.CreateNewNode(5, 0.0, -1.0, 0.0);
+    part.CreateNewNode(6, 2.0, -1.0, 0.0);
+    auto body = part.CreateNewProperties(6);
+    body->SetValue(YOUNG_MODULUS, 100.0);
+    part.CreateNewElement("Element2D4N", 1, {5, 6, 2, 1}, body);
+    part.GetCondition(7).SetProperties(bare);
+    ALMVariablesCalculationProcess(part).Execute();
+    EXPECT_NEAR(part.GetProcessInfo().GetValue(INITIAL_PENALTY), reference_penalty, 1e-14 * reference_penalty);
+    // Neither the face nor an element it bounds has one: an error naming the condition, not a silent 0.
+    body->Data().Erase(YOUNG_MODULUS);
+    try {
+        ALMVariablesCalculationProcess(part).Execute();
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("condition 7"), std::string::npos) << what;
+        EXPECT_NE(what.find("YOUNG_MODULUS"), std::string::npos) << what;
+        EXPECT_NE(what.find("fix:"), std::string::npos) << what;
+    }
+}
+
 TEST(ALMProcesses, test_fast_init_resets_slave_nodes_and_averages_friction) {
     Model model;
     ModelPart& part = TwoSidedInterface(model);
