@@ -1,7 +1,8 @@
 """Command line: ``contact-app info <file.mdpa>`` and ``contact-app run <parameters.json>``.
 
-Exit codes: 0 success (unconverged steps are warned about and the run goes on, as in Kratos);
-1 a step did not converge with ``--stop-on-non-convergence``, or a result check
+Exit codes: 0 success (with ``solver_settings.on_non_converged_step`` "continue", unconverged
+steps are warned about and the run goes on, as in Kratos); 1 a step did not converge (the
+default stops there, after step cutting when it is on), or a result check
 (``from_json_check_result_process``) failed; 2 bad input or usage (the message starts with
 ``error:``; no traceback unless ``--debug``); 3 an internal error (a bug in contact_app);
 130 interrupted (Ctrl-C).
@@ -115,7 +116,7 @@ def _run(args: argparse.Namespace) -> int:
     try:
         ca.analysis.run(
             args.parameters,
-            stop_on_non_convergence=args.stop_on_non_convergence,
+            stop_on_non_convergence=True if args.stop_on_non_convergence else None,
             quiet=args.quiet,
             safe=args.safe,
         )
@@ -167,8 +168,9 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument(
         "--stop-on-non-convergence",
         action="store_true",
-        help="stop with exit code 1 at the first step that does not converge (default: warn and "
-        "go on, as Kratos does); the outputs end at the last converged step",
+        help="stop with exit code 1 at the first step that does not converge, even if "
+        'solver_settings.on_non_converged_step is "continue" (stopping is the default); the '
+        "outputs end at the last converged step",
     )
     run.add_argument("--quiet", action="store_true", help="no per-step table and summary")
     run.add_argument(

@@ -18,10 +18,14 @@ Order of the calls (``kratos_python_layer.md`` §1.4):
   ``ExecuteAfterOutputStep``.
 * ``Finalize``: every process ``ExecuteFinalize``, ``solver.Finalize``.
 
-A step that does not converge is reported and the loop goes on, as in Kratos, unless the stage
-was created with ``stop_on_non_convergence``: then it raises ``ConvergenceError`` before that
-step's finalize and output hooks, so the outputs end at the last converged step. Step cutting
-that gives up always stops so, with the model back at its last converged state and TIME.
+A Newton iteration that meets an inverted element (``InvertedElementError``: det J or det F ≤ 0)
+fails the step, not the run. A step that does not converge is redone in sub-steps when the solver
+cuts steps (``adaptative_strategy``, or ``cut_step_on_inverted_element`` for an inverted element).
+A step that still does not converge stops the run by default: ``ConvergenceError`` is raised before
+that step's finalize and output hooks, so the outputs end at the last converged step. The loop goes
+on from that state, as Kratos does, only when ``solver_settings.on_non_converged_step`` is
+"continue" (or the stage was created with ``stop_on_non_convergence=False``). Step cutting that
+gives up always stops, with the model back at its last converged state and TIME.
 """
 
 from __future__ import annotations
@@ -33,6 +37,7 @@ import contact_app as ca
 
 from ..parameters import Parameters
 from .reporting import Reporter, StepRecord
+from .solvers.mechanical_solver import STOP_DEFAULT_REASON
 from .time_loop import keep_advancing
 
 logger = logging.getLogger("contact_app.analysis")
@@ -44,8 +49,9 @@ class AnalysisStage:
     Args:
         model: the model to work on.
         project_parameters: the whole ``ProjectParameters.json`` tree.
-        stop_on_non_convergence: raise ``ConvergenceError`` at the first step that does not
-            converge instead of going on.
+        stop_on_non_convergence: True: stop at the first step that does not converge; False: go
+            on from it; None (default): as ``solver_settings.on_non_converged_step`` says ("stop"
+            unless set to "continue").
         reporter: console report (default: a table on stdout).
 
     """
@@ -55,7 +61,7 @@ class AnalysisStage:
         model: ca.Model,
         project_parameters: Parameters,
         *,
-        stop_on_non_convergence: bool = False,
+        stop_on_non_convergence: bool | None = None,
         reporter: Reporter | None = None,
     ):
         if not isinstance(model, ca.Model):
@@ -74,6 +80,8 @@ class AnalysisStage:
         self._solver: Any = None
         #: Why step cutting gave up (the run then stops), or "".
         self._gave_up = ""
+        #: The InvertedElementError that failed the last solve, or None.
+        self._failure: Any = None
         self._list_of_processes: list[Any] = []
         self._list_of_output_processes: list[Any] = []
 
@@ -126,6 +134,7 @@ class AnalysisStage:
             self._ExpectedSteps(),
             contact_columns=hasattr(self._GetSolver(), "ContactStatus"),
         )
+        self.reporter.non_convergence_policy = self._NonConvergencePolicyNote()
         while self.KeepAdvancingSolutionLoop():
             with self.reporter.phase("solve"):
                 previous = self.time
@@ -133,21 +142,98 @@ class AnalysisStage:
                 self._last_delta = self.time - previous
                 builder = solver.GetBuilderAndSolver()
                 builder.ResetTimings()
-                self.InitializeSolutionStep()
-                solver.Predict()
-                converged = bool(solver.SolveSolutionStep())
-                cutting = getattr(solver, "StepCuttingSettings", lambda: None)()
-                if not converged and cutting is not None:
+                converged = self._TrySolveStep()
+                cutting = self._StepCutting() if not converged else None
+                if cutting is not None:
                     converged = self._SolveWithSubsteps(*cutting)
                 self.reporter.add_builder_timings(builder.GetTimings())
                 self.reporter.record_step(self._StepRecord(converged))
-                if not converged and (self.stop_on_non_convergence or self._gave_up):
+                if not converged and (self._gave_up or not self._GoesOnAfterNonConvergence()):
                     self._StopOnNonConvergence()
                 if not converged:
-                    logger.warning("TIME = %.6g: the analysis goes on with this state", self.time)
+                    logger.warning(
+                        "TIME = %.6g: the step did not converge and the analysis goes on with this "
+                        "state, as %s asks",
+                        self.time,
+                        "stop_on_non_convergence=False"
+                        if self.stop_on_non_convergence is False
+                        else 'solver_settings.on_non_converged_step = "continue"',
+                    )
                 self.FinalizeSolutionStep()
             with self.reporter.phase("output"):
                 self.OutputSolutionStep()
+
+    def _TrySolveStep(self) -> bool:
+        """InitializeSolutionStep, Predict, SolveSolutionStep; an inverted element fails the step.
+
+        The solver turns an ``InvertedElementError`` inside Newton into "not converged" (and keeps
+        it as ``last_failure``); one raised by the step's initialization or prediction is caught
+        here. Either is kept in ``self._failure`` for the step-cutting decision and the messages.
+        """
+        solver = self._GetSolver()
+        self._failure = None
+        try:
+            self.InitializeSolutionStep()
+            solver.Predict()
+            converged = bool(solver.SolveSolutionStep())
+        except ca.InvertedElementError as failure:
+            logger.warning(
+                "TIME = %.6g: the step did not converge: %s", self.time, _first_line(failure)
+            )
+            converged = False
+            self._failure = failure
+        else:
+            self._failure = getattr(solver, "last_failure", None) if not converged else None
+        return converged
+
+    def _StepCutting(self) -> tuple[float, int] | None:
+        """(split_factor, max_number_splits) to redo the failed step with, or None.
+
+        ``adaptative_strategy`` cuts any step that does not converge; an inverted element also
+        cuts the step when the user did not enable it (``cut_step_on_inverted_element``, default
+        true): it is a property of the Newton iterate, which a smaller increment avoids, and the
+        step still ends at the time the user asked for.
+        """
+        solver = self._GetSolver()
+        cutting = getattr(solver, "StepCuttingSettings", lambda: None)()
+        if cutting is not None or self._failure is None:
+            return cutting
+        cutting = getattr(solver, "InvertedElementCuttingSettings", lambda: None)()
+        if cutting is not None:
+            logger.warning(
+                "TIME = %.6g: the step is cut (split_factor %g, max_number_splits %d) because of "
+                "an inverted element, although adaptative_strategy is off: "
+                "solver_settings.cut_step_on_inverted_element is true by default (set it to false "
+                "to stop instead)",
+                self.time,
+                *cutting,
+            )
+        return cutting
+
+    def _GoesOnAfterNonConvergence(self) -> bool:
+        """Whether the loop goes on from a step that did not converge (default: no)."""
+        if self.stop_on_non_convergence is not None:
+            return not self.stop_on_non_convergence
+        policy = getattr(self._GetSolver(), "NonConvergedStepPolicy", lambda: "stop")()
+        return bool(policy == "continue")
+
+    def _NonConvergencePolicyNote(self) -> str:
+        """One line for the summary: what a step that does not converge does, and why."""
+        if self.stop_on_non_convergence is not None:
+            return (
+                "the run stops (stop_on_non_convergence=True)"
+                if self.stop_on_non_convergence
+                else "the run goes on from it (stop_on_non_convergence=False)"
+            )
+        if self._GoesOnAfterNonConvergence():
+            return (
+                'the run goes on from it (solver_settings.on_non_converged_step = "continue"; '
+                'the default "stop" would end the run there)'
+            )
+        return (
+            'the run stops (solver_settings.on_non_converged_step = "stop", the default: '
+            f"{STOP_DEFAULT_REASON})"
+        )
 
     def _SolveWithSubsteps(self, split_factor: float, max_number_splits: int) -> bool:
         """Redo a step that did not converge in sub-steps from its last converged state.
@@ -167,6 +253,7 @@ class AnalysisStage:
         solver = self._GetSolver()
         part = solver.GetComputingModelPart().GetRootModelPart()
         info = part.ProcessInfo
+        self.reporter.cut_steps += 1
         target = self.time
         start = target - info[ca.DELTA_TIME]
         delta = (target - start) / split_factor
@@ -182,9 +269,8 @@ class AnalysisStage:
             info[ca.TIME] = following
             info[ca.DELTA_TIME] = following - time
             logger.info("step cut: solving %.6g -> %.6g (split level %d)", time, following, splits)
-            self.InitializeSolutionStep()
-            solver.Predict()
-            if bool(solver.SolveSolutionStep()):
+            self.reporter.sub_steps += 1
+            if self._TrySolveStep():
                 converged_delta = following - time
                 time = following
                 if time < target - tolerance:
@@ -193,9 +279,10 @@ class AnalysisStage:
                 continue
             splits += 1
             if splits > max_number_splits:
+                reason = f" ({_first_line(self._failure)})" if self._failure is not None else ""
                 self._gave_up = (
-                    f"step cutting gave up: a sub-step to TIME = {following:.6g} did not converge "
-                    f"after max_number_splits = {max_number_splits} splits (sub-step "
+                    f"step cutting gave up: a sub-step to TIME = {following:.6g} did not converge"
+                    f"{reason} after max_number_splits = {max_number_splits} splits (sub-step "
                     f"{following - time:.3g}); TIME = {target:.6g} was not reached"
                 )
                 self._RestoreLastConverged(time, converged_delta)
@@ -367,14 +454,35 @@ class AnalysisStage:
                 "  fix:      reduce the time step, raise max_iteration or max_number_splits, or "
                 "check loads and supports"
             )
-        raise ca.ConvergenceError(
-            f"step {info[ca.STEP]} (TIME = {info[ca.TIME]:.6g}) did not converge in "
-            f"{solver.GetSolutionStrategy().GetIterationNumber()} iterations; last norms: "
-            f"{solver.LastNorms() or 'n/a'}\n"
-            "  stopped:  as asked by --stop-on-non-convergence; the outputs end at the last "
-            "converged step\n"
-            "  fix:      reduce the time step, raise max_iteration, or check loads and supports"
+        if self._failure is not None:
+            what = f"did not converge: {_first_line(self._failure)}"
+        else:
+            what = (
+                f"did not converge in {solver.GetSolutionStrategy().GetIterationNumber()} "
+                f"iterations; last norms: {solver.LastNorms() or 'n/a'}"
+            )
+        why = (
+            "as asked by --stop-on-non-convergence (stop_on_non_convergence=True)"
+            if self.stop_on_non_convergence
+            else 'solver_settings.on_non_converged_step is "stop", the default: '
+            + STOP_DEFAULT_REASON
         )
+        cutting = (
+            "solver_settings.cut_step_on_inverted_element: true"
+            if self._failure is not None
+            else "contact_settings.adaptative_strategy"
+        )
+        raise ca.ConvergenceError(
+            f"step {info[ca.STEP]} (TIME = {info[ca.TIME]:.6g}) {what}\n"
+            f"  stopped:  {why}; the outputs end at the last converged step\n"
+            f"  fix:      reduce the time step, enable step cutting ({cutting}), raise "
+            "max_iteration, or check loads and supports; to go on from such a step set "
+            'solver_settings.on_non_converged_step: "continue"'
+        )
+
+
+def _first_line(error: BaseException) -> str:
+    return str(error).partition("\n")[0]
 
 
 def _is_output(process: Any) -> bool:

@@ -84,6 +84,11 @@ class Reporter:
         self._span = (0.0, 0.0)
         self._expected: int | None = None
         self._contact_columns = False
+        #: Steps redone in sub-steps, and the sub-steps solved for them.
+        self.cut_steps = 0
+        self.sub_steps = 0
+        #: What happens to a step that does not converge, and why (set by the analysis stage).
+        self.non_convergence_policy = ""
 
     def _print(self, text: str = "") -> None:
         if self.stream is not None:
@@ -181,6 +186,12 @@ class Reporter:
             f"(assembly {self.assembly:.3f} s, linear solve {self.linear_solve:.3f} s), "
             f"output {phases['output']:.3f} s, total {total:.3f} s",
         ]
+        if self.cut_steps:
+            lines.append(
+                f"  step cutting: {self.cut_steps} step(s) redone in {self.sub_steps} sub-steps"
+            )
+        if (failed or self.cut_steps) and self.non_convergence_policy:
+            lines.append(f"  a step that does not converge: {self.non_convergence_policy}")
         if self.files:
             shown = ", ".join(self.files[:5]) + (", ..." if len(self.files) > 5 else "")
             lines.append(f"  files written ({len(self.files)}): {shown}")

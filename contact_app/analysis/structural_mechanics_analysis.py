@@ -311,7 +311,9 @@ class StructuralMechanicsAnalysis(AnalysisStage):
         project_parameters: the parameters (``Parameters`` or a plain dict); completed in place.
         base_dir: folder of the parameters file: relative paths that do not exist from the working
             directory are looked up there (None = working directory only).
-        stop_on_non_convergence: raise ``ConvergenceError`` at the first unconverged step.
+        stop_on_non_convergence: True: raise ``ConvergenceError`` at the first unconverged step;
+            False: go on from it; None: as ``solver_settings.on_non_converged_step`` says
+            ("stop" by default).
         reporter: console report (default: table and summary on stdout).
         safe: create only contact_app's own processes (no module from the case folder).
         parameters_file: the parameters file itself, which no output may overwrite.
@@ -328,7 +330,7 @@ class StructuralMechanicsAnalysis(AnalysisStage):
         project_parameters: Parameters | dict[str, Any],
         *,
         base_dir: str | Path | None = None,
-        stop_on_non_convergence: bool = False,
+        stop_on_non_convergence: bool | None = None,
         reporter: Reporter | None = None,
         safe: bool = False,
         parameters_file: str | Path | None = None,
@@ -446,7 +448,7 @@ class StructuralMechanicsAnalysis(AnalysisStage):
 def run(
     path_or_dict: str | Path | dict[str, Any] | Parameters,
     *,
-    stop_on_non_convergence: bool = False,
+    stop_on_non_convergence: bool | None = None,
     quiet: bool = False,
     model: ca.Model | None = None,
     safe: bool = False,
@@ -458,7 +460,8 @@ def run(
 
     Args:
         path_or_dict: the parameters file, or the parameters as a dict / ``Parameters``.
-        stop_on_non_convergence: stop with ``ConvergenceError`` at the first unconverged step.
+        stop_on_non_convergence: True: stop with ``ConvergenceError`` at the first unconverged
+            step; False: go on; None: ``solver_settings.on_non_converged_step`` ("stop").
         quiet: no console table or summary.
         model: the model to fill (default: a new one).
         safe: run only contact_app's own processes (``contact-app run --safe``).
@@ -468,7 +471,7 @@ def run(
 
     Raises:
         InputError, ConfigurationError: invalid input, before anything runs.
-        ConvergenceError: with ``stop_on_non_convergence``.
+        ConvergenceError: a step that did not converge (unless the run goes on from it).
 
     """
     base_dir: Path | None = None

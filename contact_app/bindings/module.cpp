@@ -7,6 +7,7 @@
 #include "custom_utilities/contact_restart_codecs.h"
 #include "contact_app/bindings/bindings.h"
 #include "contact_app/kernel/exceptions.h"
+#include "contact_app/kernel/inverted_element_error.h"
 
 namespace py = pybind11;
 
@@ -22,6 +23,29 @@ void RegisterError(py::module_& m, const char* name, py::handle base, const char
     error.attr("__doc__") = doc;
 }
 
+/// InvertedElementError(ConvergenceError) with attributes element_id (0: unknown), quantity ("det J"/"det F"),
+/// value and time (NaN: unknown). Registered after ConvergenceError, so its translator is tried first.
+void BindInvertedElementError(py::module_& m) {
+    static py::handle error_type;  // the class lives as long as the module holds it
+    py::object base = m.attr("ConvergenceError");
+    error_type = py::handle(PyErr_NewException("contact_app.InvertedElementError", base.ptr(), nullptr));
+    m.attr("InvertedElementError") = py::reinterpret_borrow<py::object>(error_type);
+    error_type.attr("__doc__") = "An element or law met det J <= 0 or det F <= 0 inside a Newton iteration "
+                                 "(attributes: element_id, quantity, value, time).";
+    py::register_exception_translator([](std::exception_ptr error) {
+        try {
+            if (error) std::rethrow_exception(error);
+        } catch (const InvertedElementError& inverted) {
+            py::object instance = error_type(inverted.what());
+            instance.attr("element_id") = inverted.ElementId();
+            instance.attr("quantity") = inverted.Quantity();
+            instance.attr("value") = inverted.Value();
+            instance.attr("time") = inverted.Time();
+            PyErr_SetObject(error_type.ptr(), instance.ptr());
+        }
+    });
+}
+
 }  // namespace
 
 void BindExceptions(py::module_& m) {
@@ -32,6 +56,7 @@ void BindExceptions(py::module_& m) {
                                     "A non-linear or linear solve that did not converge.");
     RegisterError<InternalError>(m, "InternalError", PyExc_RuntimeError,
                                  "A broken internal invariant: a bug in contact_app.");
+    BindInvertedElementError(m);
 }
 
 }  // namespace contact_app::bindings

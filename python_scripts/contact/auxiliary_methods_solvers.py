@@ -81,6 +81,7 @@ CONTACT_SETTINGS_DEFAULTS: dict[str, Any] = {
     "mixed_ulm_solver_parameters": MIXED_ULM_DEFAULTS,
 }
 
+
 #: Older names of the frictional tolerances (no stick / slip split): both blocks take the value.
 OLD_FRICTIONAL_KEYS = {
     f"frictional_contact_{kind}_{measure}_tolerance": (
@@ -229,6 +230,16 @@ class ContactSolverMixin:
         contact = self.settings["contact_settings"]
         if not contact["adaptative_strategy"].GetBool():
             return None
+        return contact["split_factor"].GetDouble(), contact["max_number_splits"].GetInt()
+
+    def InvertedElementCuttingSettings(self) -> tuple[float, int] | None:
+        """(split_factor, max_number_splits) of contact_settings, for an inverted element.
+
+        None when ``solver_settings.cut_step_on_inverted_element`` is false.
+        """
+        if not self.settings["cut_step_on_inverted_element"].GetBool():
+            return None
+        contact = self.settings["contact_settings"]
         return contact["split_factor"].GetDouble(), contact["max_number_splits"].GetInt()
 
     def _CheckCriterionName(self) -> None:

@@ -117,6 +117,19 @@ _FEATURE_FLAGS = {
 }
 
 
+#: ``on_non_converged_step``: "stop" (default) ends the run at a step that did not converge (after
+#: step cutting, when it is on); "continue" goes on from that state, as Kratos does by default.
+NON_CONVERGED_STEP_POLICIES = ("stop", "continue")
+#: Why "stop" is the default, for the log, the summary and the error message.
+STOP_DEFAULT_REASON = (
+    "a step that did not converge is not an equilibrium, and every later step would start from it "
+    "with results that look valid (Kratos goes on by default)"
+)
+#: Step cutting of an inverted element when the solver has no settings of its own (no
+#: contact_settings): Kratos' adaptative_strategy defaults, split_factor 10, max_number_splits 3.
+INVERTED_ELEMENT_CUTTING = (10.0, 3)
+
+
 class MechanicalSolver:
     """Structural solver base: settings, model part, variables, DoFs, strategy life cycle.
 
@@ -149,6 +162,8 @@ class MechanicalSolver:
         self._meshio_mapping: dict[str, Any] = {}
         self._meshio_where = ""
         self._time_step_table: Any = None
+        #: The InvertedElementError of the last SolveSolutionStep that failed on one, else None.
+        self.last_failure: Any = None
 
         self._ConvertDeprecatedSettings()
         had_domain_size = self.settings.Has("domain_size")
@@ -204,6 +219,9 @@ class MechanicalSolver:
             "auxiliary_variables_list": [],
             "auxiliary_dofs_list": [],
             "auxiliary_reaction_list": [],
+            # contact_app's own keys (not in Kratos), docs/running.md "Non-convergence":
+            "on_non_converged_step": "stop",
+            "cut_step_on_inverted_element": True,
         }
 
     def _ConvertDeprecatedSettings(self) -> None:
@@ -283,6 +301,7 @@ class MechanicalSolver:
             if settings[key].GetBool():
                 raise not_supported(settings, key, feature, f'set "{key}": false or remove it')
         choice(settings, "analysis_type", ("linear", "non_linear"))
+        choice(settings, "on_non_converged_step", NON_CONVERGED_STEP_POLICIES)
         self._CheckCriterionName()
         self._ValidateStrategySettings()
         self._ValidateBuilderSettings()
@@ -874,7 +893,21 @@ class MechanicalSolver:
         its message.
         """
         strategy = self._GetSolutionStrategy()
-        converged = bool(strategy.SolveSolutionStep())
+        self.last_failure = None
+        try:
+            converged = bool(strategy.SolveSolutionStep())
+        except ca.InvertedElementError as failure:
+            # The iterate, not the model, is unusable: the step did not converge (and may be cut).
+            self.last_failure = failure
+            info = self.main_model_part.ProcessInfo
+            logger.warning(
+                "step %d (TIME = %.6g) did not converge: Newton iteration %d failed: %s",
+                info[ca.STEP],
+                info[ca.TIME],
+                strategy.GetIterationNumber(),
+                str(failure).partition("\n")[0],
+            )
+            return False
         if not converged:
             info = self.main_model_part.ProcessInfo
             logger.warning(
@@ -885,6 +918,20 @@ class MechanicalSolver:
                 self.LastNorms() or "n/a",
             )
         return converged
+
+    def NonConvergedStepPolicy(self) -> str:
+        """``on_non_converged_step``: "stop" (default) or "continue"."""
+        return self.settings["on_non_converged_step"].GetString()
+
+    def InvertedElementCuttingSettings(self) -> tuple[float, int] | None:
+        """(split_factor, max_number_splits) for a step that failed on an inverted element.
+
+        None when ``cut_step_on_inverted_element`` is false. The contact solvers use their
+        ``contact_settings`` values.
+        """
+        if not self.settings["cut_step_on_inverted_element"].GetBool():
+            return None
+        return INVERTED_ELEMENT_CUTTING
 
     def LastNorms(self) -> str:
         """The criterion norms of the last iteration, one line."""

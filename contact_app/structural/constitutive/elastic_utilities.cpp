@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "contact_app/structural/constitutive/elastic_utilities.h"
 
+#include <cmath>
+
 #include <Eigen/LU>
 
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/geometries/geometry.h"
+#include "contact_app/kernel/inverted_element_error.h"
 #include "contact_app/kernel/properties.h"
 #include "contact_app/kernel/variables.h"
 
@@ -207,9 +210,13 @@ void CheckPositiveDeterminant(const ConstitutiveLaw::Parameters& values, const s
     const std::string nodes = values.element_geometry != nullptr
                                   ? " (element nodes " + values.element_geometry->NodeIdsString() + ")"
                                   : std::string();
-    CONTACT_THROW(InputError, law_name, ": det F = ", values.determinant_f, " at an integration point", nodes,
-                  "\n  expected: det F > 0 (an inverted element has no finite-strain stress)",
-                  "\n  fix: reduce the load or time step, or refine the mesh where it inverts");
+    // The element that evaluates the law adds its id and TIME (BaseSolidElement::PointResponse).
+    throw InvertedElementError(
+        detail::Concat(law_name, ": det F = ", values.determinant_f, " at an integration point", nodes,
+                       "\n  expected: det F > 0 (an inverted element has no finite-strain stress)",
+                       "\n  fix: reduce the load or time step (or enable step cutting: "
+                       "contact_settings.adaptative_strategy), or refine the mesh where it inverts"),
+        0, "det F", values.determinant_f, std::nan(""));
 }
 
 void ThrowUnsupportedPK1(const std::string& law_name) {

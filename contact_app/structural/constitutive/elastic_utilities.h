@@ -92,7 +92,7 @@ Vector MaterialStrain(const ConstitutiveLaw::Parameters& values, ElasticModel mo
 /// @throws InputError naming the law, the sizes and the fix
 void CheckStrainVectorSize(const Vector& strain, int strain_size, const std::string& law_name);
 /// @brief Checks det F > 0 (needed by ln J and by the /J of Cauchy measures).
-/// @throws InputError naming the law, the value and, if known, the element nodes
+/// @throws InvertedElementError naming the law, the value and, if known, the element nodes
 void CheckPositiveDeterminant(const ConstitutiveLaw::Parameters& values, const std::string& law_name);
 /// @brief Rejects StressMeasure::PK1 for finite-strain laws (P is unsymmetric and has no Voigt form here).
 /// @throws ConfigurationError naming the law and the measures it supports

@@ -24,10 +24,11 @@ public:
     /// 6 (3D) or 3 (plane strain).
     int GetStrainSize() const override;
     /// @brief Stress and tangent in @p measure (PK2, Kirchhoff or Cauchy), as flagged in @p rValues.
-    /// @throws InputError for missing E/ν, an unusable F or det F ≤ 0; ConfigurationError for PK1
+    /// @throws InputError for missing E/ν or an unusable F; InvertedElementError for det F ≤ 0;
+    ///         ConfigurationError for PK1
     void CalculateMaterialResponse(Parameters& rValues, StressMeasure measure) override;
     /// @brief STRAIN_ENERGY = W(F, J) per unit reference volume; other variables: 0.
-    /// @throws InputError for det F ≤ 0
+    /// @throws InvertedElementError for det F ≤ 0
     double CalculateValue(Parameters& rValues, const Variable<double>& rThisVariable) override;
     /// @throws InputError as LinearElasticLaw::Check
     int Check(const Properties& rMaterialProperties, const Geometry& rElementGeometry,

@@ -24,7 +24,8 @@ public:
     int GetStrainSize() const override;
     /// @brief Stress and tangent in @p measure (PK2, Kirchhoff or Cauchy), as flagged in @p rValues.
     /// @param[in,out] rValues strain_vector is read (element-provided, PK2 only) or written
-    /// @throws InputError for missing E/ν, a wrong strain size, an unusable F or det F ≤ 0 (Cauchy);
+    /// @throws InputError for missing E/ν, a wrong strain size or an unusable F; InvertedElementError for
+    ///         det F ≤ 0 (Cauchy);
     ///         ConfigurationError for PK1
     void CalculateMaterialResponse(Parameters& rValues, StressMeasure measure) override;
     /// @brief STRAIN_ENERGY = ½ Eᵀ D E per unit reference volume; other variables: 0.

@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 
 #include "contact_app/kernel/exceptions.h"
+#include "contact_app/kernel/inverted_element_error.h"
 #include "contact_app/kernel/node.h"
 #include "contact_app/kernel/process_info.h"
 #include "contact_app/kernel/properties.h"
@@ -18,6 +19,11 @@ namespace {
 
 const Variable<double>* const kDisplacementComponents[3] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
 const Variable<double>* const kReactionComponents[3] = {&REACTION_X, &REACTION_Y, &REACTION_Z};
+
+/// TIME of the ProcessInfo, NaN when it has none (an element evaluated outside an analysis).
+double TimeOf(const ProcessInfo& rCurrentProcessInfo) {
+    return rCurrentProcessInfo.Has(TIME) ? rCurrentProcessInfo.GetValue(TIME) : std::nan("");
+}
 
 /// Laws that fit a strain size, for messages.
 const char* LawExamples(int strain_size) {
@@ -124,8 +130,7 @@ void BaseSolidElement<TDim, TNumNodes, TStrainSize>::CalculateAll(Matrix* pLeftH
     values.compute_constitutive_tensor = pLeftHandSide != nullptr;
     Kinematics k;
     for (std::size_t g = 0; g < NumberOfIntegrationPoints(); ++g) {
-        ComputeKinematics(g, k);
-        EvaluateLaw(g, k, GetStressMeasure(), values);
+        PointResponse(g, GetStressMeasure(), rCurrentProcessInfo, k, values);
         const StrainVector stress = values.stress_vector;
         if (pRightHandSide) {
             rhs.noalias() -= k.weight * (k.B.transpose() * stress);
@@ -176,6 +181,20 @@ ConstitutiveLaw::Parameters BaseSolidElement<TDim, TNumNodes, TStrainSize>::LawP
     values.strain_vector.setZero(TStrainSize);
     values.stress_vector.setZero(TStrainSize);
     return values;
+}
+
+template <int TDim, int TNumNodes, int TStrainSize>
+void BaseSolidElement<TDim, TNumNodes, TStrainSize>::PointResponse(std::size_t point, StressMeasure measure,
+                                                                   const ProcessInfo& rCurrentProcessInfo,
+                                                                   Kinematics& rKinematics,
+                                                                   ConstitutiveLaw::Parameters& rValues) const {
+    try {
+        ComputeKinematics(point, rKinematics);
+        EvaluateLaw(point, rKinematics, measure, rValues);
+    } catch (const InvertedElementError& error) {
+        // The law knows neither the element nor TIME; the Newton iteration's caller reports both.
+        throw error.Located(Id(), Info(), TimeOf(rCurrentProcessInfo));
+    }
 }
 
 template <int TDim, int TNumNodes, int TStrainSize>
@@ -264,10 +283,13 @@ template <int TDim, int TNumNodes, int TStrainSize>
 void BaseSolidElement<TDim, TNumNodes, TStrainSize>::ThrowInverted(std::size_t point, double det_j,
                                                                    bool current_configuration) const {
     if (current_configuration) {
-        CONTACT_THROW(ConvergenceError, Info(), " is inverted in the current configuration: det J = ", det_j,
-                      " at integration point ", point, " (nodes ", GetGeometry().NodeIdsString(), ")",
-                      "\n  expected: det J > 0 at every integration point",
-                      "\n  fix: apply the load in smaller increments (more time steps) or refine the mesh there");
+        throw InvertedElementError(
+            detail::Concat(Info(), " is inverted in the current configuration: det J = ", det_j,
+                           " at integration point ", point, " (nodes ", GetGeometry().NodeIdsString(), ")",
+                           "\n  expected: det J > 0 at every integration point",
+                           "\n  fix: apply the load in smaller increments (more time steps, or step cutting: "
+                           "contact_settings.adaptative_strategy) or refine the mesh there"),
+            Id(), "det J", det_j, std::nan(""));
     }
     CONTACT_THROW(InputError, Info(), " is inverted or degenerate: det J = ", det_j, " at integration point ", point,
                   " of the initial configuration (nodes ", GetGeometry().NodeIdsString(), ")",
@@ -518,8 +540,7 @@ void BaseSolidElement<TDim, TNumNodes, TStrainSize>::ForEachPointResponse(Stress
     ConstitutiveLaw::Parameters values = LawParameters(rCurrentProcessInfo);
     Kinematics kinematics;
     for (std::size_t g = 0; g < NumberOfIntegrationPoints(); ++g) {
-        ComputeKinematics(g, kinematics);
-        EvaluateLaw(g, kinematics, measure, values);
+        PointResponse(g, measure, rCurrentProcessInfo, kinematics, values);
         visit(g, kinematics, values);
     }
 }

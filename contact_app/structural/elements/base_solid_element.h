@@ -147,7 +147,8 @@ protected:
     /// @brief Reference-volume factor per unit reference measure: 2πR (axisymmetric, R = Σ N_k X_k) or
     ///        ThicknessFactor().
     double ReferenceVolumeFactor(const ShapeVector& N) const;
-    /// @brief Throws for det J ≤ 0: InputError in the initial configuration, ConvergenceError in the current one.
+    /// @brief Throws for det J ≤ 0: InputError in the initial configuration, InvertedElementError (a
+    ///        ConvergenceError: the iterate, not the input, is wrong) in the current one.
     [[noreturn]] void ThrowInverted(std::size_t point, double det_j, bool current_configuration) const;
 
 private:
@@ -161,6 +162,9 @@ private:
     void CalculateAll(Matrix* pLeftHandSide, Vector* pRightHandSide, const ProcessInfo& rCurrentProcessInfo);
     void EvaluateLaw(std::size_t point, const Kinematics& rKinematics, StressMeasure measure,
                      ConstitutiveLaw::Parameters& rValues) const;
+    /// Kinematics and law response at @p point; an InvertedElementError leaves with this element's id and TIME.
+    void PointResponse(std::size_t point, StressMeasure measure, const ProcessInfo& rCurrentProcessInfo,
+                       Kinematics& rKinematics, ConstitutiveLaw::Parameters& rValues) const;
     ConstitutiveLaw::Parameters LawParameters(const ProcessInfo& rCurrentProcessInfo) const;
     /// Stress tensors per point in @p measure, with the kinematics (for results).
     template <class TVisit>

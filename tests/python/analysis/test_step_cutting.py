@@ -127,8 +127,22 @@ def test_a_cutting_that_gives_up_leaves_the_last_converged_state_at_its_time() -
     assert _right_edge_ux(analysis) == pytest.approx(_right_edge_ux(reference), rel=1e-12)
 
 
-def test_without_cutting_a_failed_step_is_reported_and_kept() -> None:
+def test_without_cutting_a_failed_step_stops_the_run_by_default() -> None:
     analysis = _analysis(limit=0.2, settings=None)
+    with pytest.raises(ca.ConvergenceError, match='on_non_converged_step is "stop", the default'):
+        analysis.Run()
+    assert [s.converged for s in analysis.reporter.steps] == [False]
+
+
+def test_without_cutting_a_failed_step_is_kept_when_the_settings_say_continue() -> None:
+    parameters = Parameters.from_file(DATA / "plate_static_parameters.json")
+    parameters.AddValue("output_processes", {})
+    parameters["processes"].AddValue("json_check_process", [])
+    parameters["solver_settings"].AddValue("on_non_converged_step", "continue")
+    analysis = StructuralMechanicsAnalysis(
+        ca.Model(), parameters, base_dir=DATA, reporter=Reporter(quiet=True)
+    )
+    _limit(analysis, limit=1e-3, settings=None)
     analysis.Run()
     assert [s.converged for s in analysis.reporter.steps] == [False, False]
 

@@ -119,9 +119,10 @@ def test_result_check_failure_raises_in_python(case_dir: Path, in_tmp: Path) -> 
         ca.analysis.run(case_dir / "bar_dynamic_parameters.json", quiet=True)
 
 
-def _hyperelastic_plate(case_dir: Path) -> Path:
+def _hyperelastic_plate(case_dir: Path, **solver_settings: Any) -> Path:
     """The plate, Neo-Hookean, with a stretch that only step 2 cannot follow in 3 iterations."""
     params = load(case_dir / "plate_static_parameters.json")
+    params["solver_settings"].update(solver_settings)
     materials = load(case_dir / "plate_materials.json")
     materials["properties"][0]["Material"]["constitutive_law"]["name"] = (
         "HyperElasticPlaneStrain2DLaw"
@@ -149,22 +150,52 @@ def _hyperelastic_plate(case_dir: Path) -> Path:
     return path
 
 
-def test_non_convergence_warns_and_goes_on(case_dir: Path, tmp_path: Path) -> None:
+def test_non_convergence_stops_by_default(case_dir: Path, tmp_path: Path) -> None:
     _hyperelastic_plate(case_dir)
+    result = run_cli("run", "case/hyper_parameters.json", cwd=tmp_path)
+    assert result.returncode == 1, result.stderr
+    assert "error: step 2 (TIME = 1) did not converge in 3 iterations" in result.stderr
+    assert (
+        'on_non_converged_step is "stop", the default: a step that did not converge is not an '
+        "equilibrium" in result.stderr
+    )
+    assert 'on_non_converged_step: "continue"' in result.stderr  # the fix names the setting
+    assert "Traceback" not in result.stderr
+    # the summary says which default was chosen and why
+    summary = (
+        "  a step that does not converge: the run stops (solver_settings.on_non_converged_step"
+    )
+    assert summary in result.stdout
+    outputs = sorted(p.name for p in (tmp_path / "vtk_output").glob("*.vtu"))
+    assert outputs == ["Structure_0_1.vtu"]
+
+
+def test_non_convergence_goes_on_when_the_settings_ask(case_dir: Path, tmp_path: Path) -> None:
+    _hyperelastic_plate(case_dir, on_non_converged_step="continue")
     result = run_cli("run", "case/hyper_parameters.json", cwd=tmp_path)
     assert result.returncode == 0, result.stderr
     assert (
         "warning: step 2 (TIME = 1) did not converge in 3 iterations; last norms: res ratio"
         in result.stderr
     )
+    assert 'goes on with this state, as solver_settings.on_non_converged_step = "continue"' in (
+        result.stderr
+    )
     assert "1 NOT converged (steps 2)" in result.stdout
+    assert "a step that does not converge: the run goes on from it" in result.stdout
     assert (tmp_path / "vtk_output" / "Structure_0_2.vtu").exists()
+
+
+def test_non_converged_step_policy_is_checked(case_dir: Path, in_tmp: Path) -> None:
+    path = _hyperelastic_plate(case_dir, on_non_converged_step="carry_on")
+    with pytest.raises(ca.InputError, match="on_non_converged_step"):
+        ca.analysis.run(path, quiet=True)
 
 
 def test_stop_on_non_convergence_keeps_the_last_converged_output(
     case_dir: Path, tmp_path: Path
 ) -> None:
-    _hyperelastic_plate(case_dir)
+    _hyperelastic_plate(case_dir, on_non_converged_step="continue")  # the flag wins
     result = run_cli("run", "case/hyper_parameters.json", "--stop-on-non-convergence", cwd=tmp_path)
     assert result.returncode == 1
     assert "error: step 2 (TIME = 1) did not converge in 3 iterations" in result.stderr

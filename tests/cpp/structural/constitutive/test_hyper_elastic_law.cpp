@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "contact_app/kernel/inverted_element_error.h"
 #include "law_test_utilities.h"
 
 namespace contact_app::testing {
@@ -94,7 +95,7 @@ TEST_P(NeoHookean, SpatialMeasuresWriteTheAlmansiStrain) {
     EXPECT_NEAR(state.strain_vector[0], 0.5 * (1.0 - 0.25), 1e-15);  // e = ½(1 − 1/λ²)
 }
 
-TEST_P(NeoHookean, InvertedDeformationIsAnInputError) {
+TEST_P(NeoHookean, InvertedDeformationIsAnInvertedElementError) {
     auto law = MakeLaw(GetParam());
     const auto properties = ElasticProperties(kYoung, kPoisson);
     const int dim = TensorDimension(*law);
@@ -102,9 +103,11 @@ TEST_P(NeoHookean, InvertedDeformationIsAnInputError) {
     F(0, 0) = -1.0;
     try {
         Evaluate(*law, KinematicState(*properties, F), Measure::PK2);
-        FAIL() << "expected an InputError";
-    } catch (const InputError& error) {
+        FAIL() << "expected an InvertedElementError";
+    } catch (const InvertedElementError& error) {
         EXPECT_NE(std::string(error.what()).find("det F = -1"), std::string::npos) << error.what();
+        EXPECT_EQ(error.ElementId(), 0u);  // the law does not know its element; BaseSolidElement adds it
+        EXPECT_DOUBLE_EQ(error.Value(), -1.0);
     }
 }
 

@@ -5,6 +5,7 @@
 #include <random>
 #include <string>
 
+#include "contact_app/kernel/inverted_element_error.h"
 #include "law_test_utilities.h"
 
 namespace contact_app::testing {
@@ -59,12 +60,12 @@ TEST_P(KirchhoffSaintVenant, SpatialStressIsThePushForward) {
               1e-13);
 }
 
-TEST_P(KirchhoffSaintVenant, CauchyOfInvertedDeformationIsAnInputError) {
+TEST_P(KirchhoffSaintVenant, CauchyOfInvertedDeformationIsAnInvertedElementError) {
     auto law = MakeLaw(GetParam());
     const int dim = TensorDimension(*law);
     Matrix F = Matrix::Identity(dim, dim);
     F(1, 1) = -0.5;
-    EXPECT_THROW(Evaluate(*law, KinematicState(*properties, F), Measure::Cauchy), InputError);
+    EXPECT_THROW(Evaluate(*law, KinematicState(*properties, F), Measure::Cauchy), InvertedElementError);
     EXPECT_NO_THROW(Evaluate(*law, KinematicState(*properties, F), Measure::PK2));  // S = D E needs no J
     EXPECT_THROW(Evaluate(*law, KinematicState(*properties, F), Measure::PK1), ConfigurationError);
 }

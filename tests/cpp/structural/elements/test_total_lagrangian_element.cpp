@@ -3,6 +3,8 @@
 // the small-displacement stiffness of the same geometry, so they linearise to the small-displacement element.
 #include <gtest/gtest.h>
 
+#include "contact_app/kernel/inverted_element_error.h"
+#include "contact_app/kernel/variables.h"
 #include "solid_element_test_utilities.h"
 
 namespace contact_app::testing {
@@ -42,6 +44,45 @@ TEST_P(FiniteStrainTest, TangentAtRestEqualsSmallDisplacementStiffness) {
 }
 
 INSTANTIATE_TEST_SUITE_P(All, FiniteStrainTest, ::testing::ValuesIn(FiniteStrainCases()), CaseName);
+
+/// Total-Lagrangian elements with a Neo-Hookean law, whose ln J needs det F > 0.
+std::vector<ElementLawCase> TotalLagrangianHyperElasticCases() {
+    std::vector<ElementLawCase> cases;
+    for (const ElementLawCase& c : ElementLawCases())
+        if (c.element.formulation == Formulation::TotalLagrangian && !c.element.axisymmetric &&
+            c.law.rfind("HyperElastic", 0) == 0)
+            cases.push_back(c);
+    return cases;
+}
+
+class InvertedLawTest : public ::testing::TestWithParam<ElementLawCase> {};
+
+// The law meets det F = -1; the element that evaluated it adds its id and TIME to the InvertedElementError.
+TEST_P(InvertedLawTest, LawErrorIsLocatedByTheElement) {
+    const ElementLawCase& c = GetParam();
+    SolidTestModel model(c.law);
+    Element& element = model.AddSingleElement(c.element, 7);
+    element.Initialize(model.GetProcessInfo());
+    Geometry& geometry = element.GetGeometry();
+    for (std::size_t i = 0; i < geometry.PointsNumber(); ++i)  // x = -X: det F = -1
+        model.SetDisplacement(geometry[i], Array3(-2.0 * geometry[i].InitialCoordinates()[0], 0.0, 0.0));
+    model.Part().GetProcessInfo().SetValue(TIME, 1.5);
+    Vector rhs;
+    try {
+        element.CalculateRightHandSide(rhs, model.GetProcessInfo());
+        FAIL() << "expected an InvertedElementError";
+    } catch (const InvertedElementError& error) {
+        EXPECT_EQ(error.ElementId(), 7u);
+        EXPECT_EQ(error.Quantity(), "det F");
+        EXPECT_NEAR(error.Value(), -1.0, 1e-12);
+        EXPECT_DOUBLE_EQ(error.Time(), 1.5);
+        const std::string message = error.what();
+        for (const char* part : {"#7", "det F = -1", "(TIME = 1.5)", "step cutting"})
+            EXPECT_NE(message.find(part), std::string::npos) << message;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(All, InvertedLawTest, ::testing::ValuesIn(TotalLagrangianHyperElasticCases()), CaseName);
 
 }  // namespace
 }  // namespace contact_app::testing

@@ -5,6 +5,8 @@
 
 #include <Eigen/Dense>
 
+#include "contact_app/kernel/inverted_element_error.h"
+#include "contact_app/kernel/variables.h"
 #include "solid_element_test_utilities.h"
 
 namespace contact_app::testing {
@@ -93,7 +95,7 @@ TEST_P(UpdatedLagrangianTest, StoredF0KeepsTheTotalDeformationGradientAcrossStep
     EXPECT_LT(RelativeError(r_ul, r_tl), 1e-10);
 }
 
-TEST_P(UpdatedLagrangianTest, InvertedCurrentConfigurationIsAConvergenceError) {
+TEST_P(UpdatedLagrangianTest, InvertedCurrentConfigurationIsAnInvertedElementError) {
     const ElementLawCase& c = GetParam();
     SolidTestModel model(c.law);
     Element& element = model.AddSingleElement(c.element);
@@ -101,9 +103,21 @@ TEST_P(UpdatedLagrangianTest, InvertedCurrentConfigurationIsAConvergenceError) {
     Eigen::Matrix3d mirror = Eigen::Matrix3d::Identity();
     mirror(0, 0) = -1.0;
     SetHomogeneous(model, element, mirror);
+    model.Part().GetProcessInfo().SetValue(TIME, 0.25);
     Vector rhs;
-    ExpectError<ConvergenceError>([&] { element.CalculateRightHandSide(rhs, model.GetProcessInfo()); },
-                                  {"inverted in the current configuration", "smaller increments"});
+    // A ConvergenceError (the iteration fails, not the run) that carries the element, det J and TIME.
+    ExpectError<ConvergenceError>(
+        [&] { element.CalculateRightHandSide(rhs, model.GetProcessInfo()); },
+        {"inverted in the current configuration", "#1", "(TIME = 0.25)", "smaller increments"});
+    try {
+        element.CalculateRightHandSide(rhs, model.GetProcessInfo());
+        FAIL() << "expected an InvertedElementError";
+    } catch (const InvertedElementError& error) {
+        EXPECT_EQ(error.ElementId(), 1u);
+        EXPECT_EQ(error.Quantity(), "det J");
+        EXPECT_LT(error.Value(), 0.0);
+        EXPECT_DOUBLE_EQ(error.Time(), 0.25);
+    }
 }
 
 TEST_P(UpdatedLagrangianTest, SingleStepBufferIsReported) {
