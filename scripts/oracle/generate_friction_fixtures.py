@@ -8,10 +8,15 @@ the mesh stays in ../shared/kratos_cases, every path is relative to the case fol
 ``_reconstruction`` key says where each setting comes from). This script runs every case folder with
 the installed Kratos and writes ``kratos_oracle/<name>.json``: the final DISPLACEMENT of the
 Contact_Part nodes plus, per slave node, the contact state the friction code must reproduce
-(ACTIVE, SLIP, augmented pressures, WEIGHTED_SLIP), and the summed REACTION of the fixed nodes.
+(ACTIVE, SLIP, augmented pressures, WEIGHTED_SLIP), and the summed REACTION of the fixed nodes;
+for a case of several steps, the slave nodes' state after every step (``history``).
 The general ALM case and the penalty perfect stick are in ../shared/kratos_cases already: their
 fixtures (``alm_frictional_2d_hyper_simple``, ``penalty_frictional_2d_stick``) come from
 generate_kratos_fixtures.py, hence ``*_stick_ramp`` for the press-then-slide stick variants.
+The suite's static-evolution and dynamic evolution-load variants come without meshes: their folders
+(``alm_frictional_2d_static_evolution_load``, ``alm_frictional_2d_evolution_load``) run our own
+model of the same character, ``cases/frictional_evolution_load_2d.mdpa`` written by
+make_evolution_load_mesh.py.
 
 Usage (same separate virtual environment as generate_kratos_fixtures.py)::
 
@@ -70,15 +75,8 @@ def _reaction_sums(main, raw: dict) -> dict:
     }
 
 
-def run(name: str) -> dict:
-    """Run the case folder ``name`` (Kratos reads its paths relative to the folder)."""
-    folder = CASES_DIR / name
-    os.chdir(folder)
-    raw = json.loads((folder / "parameters.json").read_text())
-    model = KM.Model()
-    analysis = StructuralMechanicsAnalysis(model, KM.Parameters(json.dumps(raw)))
-    analysis.Run()
-    main = model.GetModelPart("Structure")
+def _contact_state(main) -> tuple[dict, dict]:
+    """DISPLACEMENT of the Contact_Part nodes; contact state and ACTIVE/SLIP of its slave nodes."""
     values: dict[str, dict[str, float]] = {}
     flags: dict[str, dict[str, bool]] = {}
     for node in main.GetSubModelPart("Contact_Part").Nodes:
@@ -93,7 +91,63 @@ def run(name: str) -> dict:
         entry.update(_components(node, "AUGMENTED_TANGENT_CONTACT_PRESSURE", historical=False))
         entry.update(_components(node, "WEIGHTED_SLIP", historical=True))
         flags[f"NODE_{node.Id}"] = {"ACTIVE": node.Is(KM.ACTIVE), "SLIP": node.Is(KM.SLIP)}
-    return {
+    return values, flags
+
+
+#: What ``history`` keeps per step, per slave node (arrays in the order of ``nodes``).
+HISTORY_VALUES = (
+    "DISPLACEMENT_X",
+    "DISPLACEMENT_Y",
+    "AUGMENTED_NORMAL_CONTACT_PRESSURE",
+    "AUGMENTED_TANGENT_CONTACT_PRESSURE_X",
+    "AUGMENTED_TANGENT_CONTACT_PRESSURE_Y",
+    "WEIGHTED_SLIP_X",
+    "WEIGHTED_SLIP_Y",
+)
+
+
+class _RecordingAnalysis(StructuralMechanicsAnalysis):
+    """The analysis, keeping the slave nodes' state and the reactions after every step."""
+
+    def __init__(self, model, parameters, raw: dict) -> None:
+        super().__init__(model, parameters)
+        self.raw = raw
+        self.history: list[dict] = []
+
+    def FinalizeSolutionStep(self) -> None:  # noqa: N802 - Kratos name
+        super().FinalizeSolutionStep()
+        main = self.model.GetModelPart("Structure")
+        values, flags = _contact_state(main)
+        nodes = sorted(flags, key=lambda key: int(key.removeprefix("NODE_")))
+        reactions = _reaction_sums(main, self.raw)
+        self.history.append(
+            {
+                "time": main.ProcessInfo[KM.TIME],
+                "iterations": main.ProcessInfo[KM.NL_ITERATION_NUMBER],
+                "nodes": [int(key.removeprefix("NODE_")) for key in nodes],
+                **{name: [values[key][name] for key in nodes] for name in HISTORY_VALUES},
+                **{flag: [flags[key][flag] for key in nodes] for flag in ("ACTIVE", "SLIP")},
+                **{name: reactions[name] for name in ("REACTION_X", "REACTION_Y")},
+            }
+        )
+
+
+def run(name: str) -> dict:
+    """Run the case folder ``name`` (Kratos reads its paths relative to the folder).
+
+    A case of more than one step also gets ``history``: per step the slave nodes' displacements,
+    augmented pressures, WEIGHTED_SLIP and ACTIVE/SLIP, the Newton iterations and the summed
+    reactions.
+    """
+    folder = CASES_DIR / name
+    os.chdir(folder)
+    raw = json.loads((folder / "parameters.json").read_text())
+    model = KM.Model()
+    analysis = _RecordingAnalysis(model, KM.Parameters(json.dumps(raw)), raw)
+    analysis.Run()
+    main = model.GetModelPart("Structure")
+    values, flags = _contact_state(main)
+    result = {
         "case": f"cases/{name}",
         "components": False,
         "kratos": importlib.metadata.version("KratosMultiphysics"),
@@ -103,6 +157,9 @@ def run(name: str) -> dict:
         "flags": flags,
         "reaction_sum": _reaction_sums(main, raw),
     }
+    if len(analysis.history) > 1:
+        result["history"] = analysis.history
+    return result
 
 
 def main() -> int:
