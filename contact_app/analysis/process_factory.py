@@ -33,6 +33,7 @@ from typing import Any
 import contact_app as ca
 
 from ..json_input import quote
+from ..legacy_keys import convert_legacy_keys
 from ..parameters import Parameters, suggest
 from .paths import PathResolver
 from .validation import error
@@ -267,6 +268,7 @@ class KratosProcessFactory:
             return None
         if not item.Has("Parameters"):
             item.AddValue("Parameters", {})
+        convert_legacy_keys(item["Parameters"], "process")  # mesh_id
         self._ResolvePaths(item["Parameters"])
         factory: Callable[[Parameters, ca.Model], Any] = module.Factory
         return factory(item, self.model)

@@ -51,6 +51,7 @@ import numpy as np
 
 from .. import _core
 from .._core import InputError, Model
+from ..legacy_keys import convert_legacy_keys
 from ..model_part_lookup import get_model_part
 from ..parameters import Parameters
 from ._utilities import check_historical, get_flag, get_variable, validate
@@ -82,7 +83,6 @@ DEFAULTS: dict[str, Any] = {
     "gauss_point_variables_extrapolated_to_nodes": [],
     "gauss_point_variables_in_elements": [],
 }
-LEGACY_KEYS = {"output_frequency": "output_interval", "folder_name": "output_path"}
 
 #: Kratos geometry name -> meshio cell type (node orderings agree for these).
 CELL_TYPES = {
@@ -125,7 +125,7 @@ class VtkOutputProcess(OutputProcess):
     """
 
     def __init__(self, model: Model, settings: Parameters) -> None:
-        _convert_legacy_keys(settings)
+        convert_legacy_keys(settings, "vtk_output_process")  # output_frequency, folder_name
         validate(settings, DEFAULTS, ("model_part_name",), "vtk_output_process")
         self.model_part = get_model_part(
             model, settings["model_part_name"].GetString(), settings.Where("model_part_name")
@@ -362,27 +362,6 @@ class VtkOutputProcess(OutputProcess):
 
 
 # -- helpers --
-
-
-def _convert_legacy_keys(settings: Parameters) -> None:
-    for old, new in LEGACY_KEYS.items():
-        if not settings.Has(old):
-            continue
-        if settings.Has(new):
-            raise InputError(
-                f'both "{old}" and "{new}" are given\n  where:    {settings.Where(old)}\n'
-                f'  fix:      keep only "{new}" ("{old}" is its old name)'
-            )
-        LOGGER.warning(
-            'vtk_output_process: "%s" is the old name of "%s"; using %s = %s (%s)',
-            old,
-            new,
-            new,
-            settings[old].WriteJsonString(),
-            settings.Where(old),
-        )
-        settings.AddValue(new, settings[old])
-        settings.RemoveValue(old)
 
 
 def _choice(settings: Parameters, key: str, allowed: tuple[str, ...]) -> str:

@@ -18,6 +18,7 @@ from contact_app.analysis.solvers.convergence_criteria_factory import (
     check_criterion_name,
 )
 from contact_app.analysis.validation import error, not_supported
+from contact_app.legacy_keys import convert_legacy_keys
 from contact_app.parameters import Parameters, suggest
 
 from .contact_convergence_criteria_factory import CreateContactConvergenceCriterion
@@ -80,29 +81,6 @@ CONTACT_SETTINGS_DEFAULTS: dict[str, Any] = {
     "use_mixed_ulm_solver": True,
     "mixed_ulm_solver_parameters": MIXED_ULM_DEFAULTS,
 }
-
-
-#: Older names of the frictional tolerances (no stick / slip split): both blocks take the value.
-OLD_FRICTIONAL_KEYS = {
-    f"frictional_contact_{kind}_{measure}_tolerance": (
-        f"frictional_stick_contact_{kind}_{measure}_tolerance",
-        f"frictional_slip_contact_{kind}_{measure}_tolerance",
-    )
-    for kind in ("displacement", "residual")
-    for measure in ("relative", "absolute")
-}
-
-
-def convert_old_frictional_keys(contact: Parameters) -> None:
-    """Turn the pre-split ``frictional_contact_*_tolerance`` keys into the stick and slip ones."""
-    for old, new_keys in OLD_FRICTIONAL_KEYS.items():
-        if contact.Has(old):
-            value = contact[old].GetDouble()
-            contact.RemoveValue(old)
-            for new in new_keys:
-                if not contact.Has(new):
-                    contact.AddValue(new, value)
-            logger.warning('contact_settings: "%s" is deprecated; using it for stick and slip', old)
 
 
 def mortar_variables(mortar_type: str) -> list[Any]:
@@ -213,7 +191,7 @@ class ContactSolverMixin:
     def ValidateSettings(self) -> None:
         """Structural checks, then ``contact_settings`` (unknown keys are errors)."""
         contact = self.settings["contact_settings"]
-        convert_old_frictional_keys(contact)
+        convert_legacy_keys(contact, "contact_settings")  # frictional_contact_*_tolerance
         contact.RecursivelyValidateAndAssignDefaults(CONTACT_SETTINGS_DEFAULTS)
         self.mortar_type = check_mortar_type(contact)
         # split_factor, max_number_splits, ... were range-checked by the defaults validation.

@@ -16,6 +16,7 @@ from typing import Any
 
 import contact_app as ca
 
+from ...legacy_keys import convert_legacy_keys
 from ...parameters import Parameters, suggest
 from ..materials import CheckMeshProperties, MaterialsReader
 from ..paths import PathResolver
@@ -28,14 +29,6 @@ from .convergence_criteria_factory import (
 )
 
 logger = logging.getLogger("contact_app.analysis")
-
-#: Keys of old files that are removed with a warning (they have no effect any more).
-REMOVED_KEYS = (
-    "use_computing_model_part",
-    "computing_model_part_name",
-    "problem_domain_sub_model_part_list",
-    "processes_sub_model_part_list",
-)
 
 #: Every key a ``linear_solver_settings`` block may hold (Kratos linear solver factories). Only
 #: ``solver_type``, ``tolerance`` and ``max_iteration`` change what contact_app does; the others
@@ -227,10 +220,9 @@ class MechanicalSolver:
     def _ConvertDeprecatedSettings(self) -> None:
         """Translate the keys of old files (Kratos does the same, with a warning per key)."""
         settings = self.settings
-        for key in REMOVED_KEYS:
-            if settings.Has(key):
-                logger.warning("%s is deprecated and has no effect; removed", settings.Where(key))
-                settings.RemoveValue(key)
+        convert_legacy_keys(settings, "solver_settings")  # renamed and removed keys (one table)
+        if settings.Has("model_import_settings"):
+            convert_legacy_keys(settings["model_import_settings"], "model_import_settings")
         if settings.Has("block_builder"):
             use_block = settings["block_builder"].GetBool()
             if settings.Has("builder_and_solver_settings") and settings[
