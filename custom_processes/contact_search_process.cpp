@@ -6,6 +6,9 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <sstream>
+#include <unordered_set>
+#include <unordered_map>
 
 #include <Eigen/Geometry>
 
@@ -13,6 +16,7 @@
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/registry.h"
 #include "custom_conditions/paired_condition.h"
+#include "custom_processes/penetration_check.h"
 #include "custom_processes/self_contact_utilities.h"
 #include "custom_utilities/contact_utilities.h"
 #include "custom_utilities/index_map.h"
@@ -47,37 +51,6 @@ bool ShareANode(const Geometry& a, const Geometry& b) {
         for (std::size_t j = 0; j < b.PointsNumber(); ++j)
             if (&a[i] == &b[j]) return true;
     return false;
-}
-
-/// Signed distance t with x + t·d on the master face (line: the segment; surface: the face, through its plane
-/// and the geometry's inside test), or nothing when d is parallel to the face or misses it.
-std::optional<double> ProjectAlong(const Array3& x, const Array3& d, const Condition& master) {
-    const Geometry& face = master.GetGeometry();
-    constexpr double tolerance = 1e-6;
-    if (face.WorkingSpaceDimension() == 2) {
-        const Array3 a = face[0].Coordinates(), e = face[1].Coordinates() - a;
-        const double det = -d[0] * e[1] + e[0] * d[1];
-        if (std::abs(det) <= 1e-14 * e.norm() * d.norm()) return std::nullopt;
-        const Array3 r = a - x;  // t d − s e = r
-        const double t = (-r[0] * e[1] + e[0] * r[1]) / det;
-        const double s = (d[0] * r[1] - d[1] * r[0]) / det;
-        if (s < -tolerance || s > 1.0 + tolerance) return std::nullopt;
-        return t;
-    }
-    // Surface: the plane through the centre with the face NORMAL, then the edge test of the projected point
-    // (exact for planar convex faces; a warped quadrilateral is taken as its mean plane).
-    const Array3 normal = master.GetValue(NORMAL);
-    const double denominator = d.dot(normal);
-    if (std::abs(denominator) <= 1e-12) return std::nullopt;
-    const double t = (face.Center() - x).dot(normal) / denominator;
-    const Array3 p = x + t * d;
-    const std::size_t n = face.PointsNumber();
-    for (std::size_t k = 0; k < n; ++k) {
-        const Array3& a = face[k].Coordinates();
-        const Array3 edge = face[(k + 1) % n].Coordinates() - a;
-        if (edge.cross(p - a).dot(normal) < -tolerance * edge.squaredNorm()) return std::nullopt;
-    }
-    return t;
 }
 
 /// The node's NORMAL, or @p fallback when it is zero.
@@ -241,7 +214,10 @@ void ContactSearchProcess::UpdateMortarConditions() {
     CreatePointListMortar();
     mTimings.tree_build = Seconds(phase);
     phase = Clock::now();
+    if (!mPenetrationChecked) FindInitialPenetration();
+    mPenetrationChecked = true;
     SearchPairs();
+    PairPenetratingNodes();
     mTimings.queries = Seconds(phase);
     if (mSettings.check_gap == CheckGap::MappingCheck) {
         CheckPairing();
@@ -253,6 +229,7 @@ void ContactSearchProcess::UpdateMortarConditions() {
         CreatePairConditions();
         ComputeWeightedReaction();
     }
+    ActivatePenetratingNodes();
     // Every pair the search keeps is assembled during the step: the active set changes inside the Newton loop, and
     // a pair switched off here would miss the contribution of a slave node that becomes active later.
     for (const auto& pair : mpComputingPart->Conditions()) pair->Set(ACTIVE, true);
@@ -280,22 +257,36 @@ void ContactSearchProcess::BuildTree(const std::vector<Condition*>& masters) {
     centres.reserve(masters.size());
     const bool obb = UsesOBB();
     if (obb) mThickness = OBBThickness();
+    mMaxMasterRadius = 0.0;
     for (Condition* face : masters) {
         centres.push_back(face->GetGeometry().Center());
+        for (std::size_t i = 0; i < face->GetGeometry().PointsNumber(); ++i)
+            mMaxMasterRadius = std::max(mMaxMasterRadius, (face->GetGeometry()[i].Coordinates() - centres.back()).norm());
         mMasters.push_back({face, obb ? std::make_shared<OrientedBoundingBox>(face->GetGeometry(), mThickness) : nullptr});
     }
     mTree.Build(centres, mSettings.bucket_size);
     mTimings.master_faces = masters.size();
 }
 
+bool ContactSearchProcess::SearchesInBox() const {
+    return mSettings.type_search == SearchTreeType::InBox || mSettings.type_search == SearchTreeType::InBoxWithOBB;
+}
+
+double ContactSearchProcess::SearchReach(const Condition& slave) const {
+    const Geometry& face = slave.GetGeometry();
+    if (SearchesInBox()) return mSettings.search_factor * (face.LocalSpaceDimension() == 1 ? face.Length() : std::sqrt(face.Area()));
+    double radius = 0.0;
+    const Array3 centre = face.Center();
+    for (std::size_t i = 0; i < face.PointsNumber(); ++i) radius = std::max(radius, (face[i].Coordinates() - centre).norm());
+    return mSettings.search_factor * radius;
+}
+
 void ContactSearchProcess::QueryCandidates(const Condition& slave, std::vector<std::size_t>& results) const {
     const Geometry& face = slave.GetGeometry();
-    const Array3 centre = face.Center();
-    if (mSettings.type_search == SearchTreeType::InBox || mSettings.type_search == SearchTreeType::InBoxWithOBB) {
+    const double length = SearchReach(slave);
+    if (SearchesInBox()) {
         // The face's box swept by ±L along the nodal normals, L = search_factor × face size (2D length,
         // 3D √area): masters in front (open gap) and behind (penetration) are found.
-        const double size = face.LocalSpaceDimension() == 1 ? face.Length() : std::sqrt(face.Area());
-        const double length = mSettings.search_factor * size;
         const Array3 fallback = slave.GetValue(NORMAL);
         Array3 lo = Array3::Constant(std::numeric_limits<double>::max()), hi = -lo;
         for (std::size_t i = 0; i < face.PointsNumber(); ++i) {
@@ -307,10 +298,7 @@ void ContactSearchProcess::QueryCandidates(const Condition& slave, std::vector<s
         mTree.SearchInBox(lo, hi, results, mSettings.allocation_size);
         return;
     }
-    double radius = 0.0;
-    for (std::size_t i = 0; i < face.PointsNumber(); ++i)
-        radius = std::max(radius, (face[i].Coordinates() - centre).norm());
-    mTree.SearchInRadius(centre, mSettings.search_factor * radius, results, mSettings.allocation_size);
+    mTree.SearchInRadius(face.Center(), length, results, mSettings.allocation_size);
 }
 
 ContactSearchProcess::CheckResult ContactSearchProcess::CheckCondition(const Condition& slave,
@@ -360,7 +348,12 @@ void ContactSearchProcess::SearchPairs() {
         for (const std::size_t index : found) {
             Condition& master = *mMasters[index].condition;
             if (obb) {
-                if (!slave_box) slave_box.emplace(slave->GetGeometry(), mThickness);
+                if (!slave_box) {
+                    // A face starting inside the master body is swept behind itself by the search reach, like the
+                    // in_box sweep, so that the masters it penetrates pass the filter.
+                    slave_box.emplace(slave->GetGeometry(), mThickness);
+                    if (mPenetratingFaces.count(slave)) slave_box->ExtendAlong(-slave->GetValue(NORMAL), SearchReach(*slave));
+                }
                 if (!slave_box->HasIntersection(*mMasters[index].box)) continue;
             }
             if (CheckCondition(*slave, master) != CheckResult::OK) continue;
@@ -368,6 +361,89 @@ void ContactSearchProcess::SearchPairs() {
             else AddPotentialPairing(*slave, master);
         }
     }
+}
+
+// -- Initial penetration (docs/theory/contact_search.md) --
+
+void ContactSearchProcess::FindInitialPenetration() {
+    // Surface components (faces joined through shared nodes): a face of the node's own body never contains it.
+    std::unordered_map<const Node*, const Node*> parent;
+    const auto find = [&](const Node* node) {
+        auto it = parent.find(node);
+        while (it != parent.end() && it->second != node) {
+            node = it->second;
+            it = parent.find(node);
+        }
+        return node;
+    };
+    for (const auto& face : mpContactPart->Conditions()) {
+        if (IsPair(*face)) continue;
+        const Geometry& geometry = face->GetGeometry();
+        for (std::size_t i = 0; i < geometry.PointsNumber(); ++i) parent.emplace(&geometry[i], &geometry[i]);
+        for (std::size_t i = 1; i < geometry.PointsNumber(); ++i) parent[find(&geometry[i])] = find(&geometry[0]);
+    }
+    std::unordered_map<const Node*, std::vector<Condition*>> faces_of;
+    for (Condition* face : SlaveFaces())
+        for (std::size_t i = 0; i < face->GetGeometry().PointsNumber(); ++i)
+            faces_of[&face->GetGeometry()[i]].push_back(face);
+    std::vector<Node*> nodes = SlaveNodes();
+    std::sort(nodes.begin(), nodes.end(), [](const Node* a, const Node* b) { return a->Id() < b->Id(); });
+    std::vector<Condition*> masters;
+    for (const MasterFace& master : mMasters) masters.push_back(master.condition);
+    const auto penetrating =
+        FindPenetratingNodes(nodes, masters, mTree, mMaxMasterRadius, [&](const Node& node, const Condition& master) {
+            return find(&node) == find(&master.GetGeometry()[0]);
+        });
+    const double factor = ActiveCheckFactor();
+    std::vector<PenetratingNode> too_deep;
+    double needed_factor = 0.0, deepest = 0.0;
+    for (const PenetratingNode& hit : penetrating) {
+        if (hit.depth <= factor * NodalH(*hit.node)) continue;  // within what the activation rules already take
+        double reach = 0.0;
+        for (const Condition* face : faces_of[hit.node]) reach = std::max(reach, SearchReach(*face));
+        if (hit.depth > reach) {
+            too_deep.push_back(hit);
+            needed_factor = std::max(needed_factor, mSettings.search_factor * hit.depth / reach);
+            deepest = std::max(deepest, hit.depth);
+            continue;
+        }
+        for (Condition* face : faces_of[hit.node]) {
+            mPenetratingFaces.insert(face);
+            mPenetrationPairs.emplace_back(face, hit.master);
+        }
+        mPenetratingNodes.emplace_back(hit.node, hit.depth);
+    }
+    if (too_deep.empty()) return;
+    std::ostringstream list;
+    for (std::size_t k = 0; k < std::min<std::size_t>(too_deep.size(), 5); ++k)
+        list << (k ? ", " : "") << "node " << too_deep[k].node->Id() << " at depth " << too_deep[k].depth << " behind master condition "
+             << too_deep[k].master->Id();
+    if (too_deep.size() > 5) list << ", ...";
+    CONTACT_THROW(InputError, "contact search: ", too_deep.size(), " slave node(s) of \"", mpContactPart->FullName(),
+                  "\" start behind the master surface (inside the master body), deeper than the search reaches (", list.str(),
+                  "; deepest ", deepest, ")\n  where:    search_parameters › search_factor = ", mSettings.search_factor,
+                  " (", SearchesInBox() ? "the box sweep" : "the search radius",
+                  " is search_factor × the slave face size)\n  expected: an initial penetration the search reaches, or "
+                  "none\n  fix:      move the slave body out of the master (check the mesh coordinates), or raise "
+                  "search_factor to at least ",
+                  std::ceil(needed_factor * 1.05 * 10.0 - 1e-9) / 10.0, " so that these nodes are paired and pushed out");
+}
+
+void ContactSearchProcess::PairPenetratingNodes() {
+    // The master each penetrating node is behind, whether or not the candidate query reached its centre.
+    for (const auto& [slave, master] : mPenetrationPairs)
+        if (CheckCondition(*slave, *master) == CheckResult::OK) IndexMapOf(*slave).AddId(master->Id());
+    mPenetrationPairs.clear();
+    mPenetratingFaces.clear();
+}
+
+void ContactSearchProcess::ActivatePenetratingNodes() {
+    for (auto& [node, depth] : mPenetratingNodes) {
+        SetActiveNode(*node);
+        if (mSettings.check_gap == CheckGap::MappingCheck && node->GetValue(NORMAL_GAP) > -depth)
+            node->SetValue(NORMAL_GAP, -depth);
+    }
+    mPenetratingNodes.clear();
 }
 
 // -- Pairs --

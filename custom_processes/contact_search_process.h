@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "contact_app/kernel/model_part.h"
@@ -106,6 +107,16 @@ private:
     void BuildTree(const std::vector<Condition*>& masters);
     void QueryCandidates(const Condition& slave, std::vector<std::size_t>& results) const;
     double OBBThickness() const;
+    bool SearchesInBox() const;
+    /// How far the search looks from a slave face: search_factor × (in_box*: face size; else: largest centre-node
+    /// distance), also how far behind the face a penetrated master is found.
+    double SearchReach(const Condition& slave) const;
+    /// First search only: finds the slave nodes that start inside the master body; those within the reach are
+    /// paired with the face they are behind (PairPenetratingNodes) and activated (ActivatePenetratingNodes), their
+    /// faces' OBBs swept backwards; deeper ones throw InputError.
+    void FindInitialPenetration();
+    void PairPenetratingNodes();
+    void ActivatePenetratingNodes();
     CheckResult CheckCondition(const Condition& slave, const Condition& master) const;
     void SearchPairs();
     void AddPotentialPairing(Condition& slave, Condition& master);
@@ -134,6 +145,11 @@ private:
     std::vector<MasterFace> mMasters;
     SearchTree mTree;
     double mThickness = 1.0;
+    double mMaxMasterRadius = 0.0;                       // largest centre-node distance of the master faces
+    bool mPenetrationChecked = false;                    // PairPenetratingNodes ran (first search)
+    std::vector<std::pair<Node*, double>> mPenetratingNodes;  // found by it, with their depth, to activate
+    std::vector<std::pair<Condition*, Condition*>> mPenetrationPairs;  // (slave face, master it penetrates)
+    std::unordered_set<const Condition*> mPenetratingFaces;          // slave faces with a penetrating node
     std::vector<std::pair<Node*, Array3>> mStepJump;  // nodes moved for a dynamic search, and by how much
     std::vector<Dof*> mSymmetryMultipliers;            // fixed by ContactUtilities::FixSymmetryPlaneMultipliers
     Timings mTimings;

@@ -52,6 +52,15 @@ OrientedBoundingBox::OrientedBoundingBox(int dim, const Array3& center, const st
     if (mDim == 2) mHalf[2] = 0.0;
 }
 
+void OrientedBoundingBox::ExtendAlong(const Array3& direction, double length) {
+    int axis = 0;
+    for (int k = 1; k < mDim; ++k)
+        if (std::abs(mAxes[k].dot(direction)) > std::abs(mAxes[axis].dot(direction))) axis = k;
+    const double sign = mAxes[axis].dot(direction) < 0.0 ? -1.0 : 1.0;
+    mCenter += 0.5 * length * sign * mAxes[axis];
+    mHalf[axis] += 0.5 * length;
+}
+
 double OrientedBoundingBox::ProjectedRadius(const Array3& axis) const {
     double radius = 0.0;
     for (int k = 0; k < mDim; ++k) radius += mHalf[k] * std::abs(mAxes[k].dot(axis));

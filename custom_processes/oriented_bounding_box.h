@@ -25,6 +25,10 @@ public:
     /// @brief Separating axis theorem: true unless some axis separates the boxes strictly. 2D: the 4 box axes;
     ///        3D: the 6 box axes and the 9 (non-degenerate) cross products.
     bool HasIntersection(const OrientedBoundingBox& other) const;
+    /// @brief Grows the box by @p length on one side: along the axis closest to @p direction, towards it
+    ///        (the slave box swept behind the face, into its own body, where a penetrated master lies).
+    /// @param[in] direction any non-zero vector; @param[in] length ≥ 0, in model units
+    void ExtendAlong(const Array3& direction, double length);
 
     int Dimension() const { return mDim; }
     const Array3& Center() const { return mCenter; }

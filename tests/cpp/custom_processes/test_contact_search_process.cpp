@@ -264,6 +264,59 @@ TEST(ContactSearch, FarApartFindsNothing) {
     for (const auto& node : m.contact->Nodes()) EXPECT_FALSE(node->Is(ACTIVE));
 }
 
+TEST(ContactSearch, InitialPenetrationWithinReachIsPairedAndActive) {
+    // Slave nodes 0.15 inside the master body: deeper than the OBB slab (0.1 × h = 0.01) and than direct_check's
+    // −h, within the reach (in_radius 3.5 × 0.05 = 0.175, in_box 3.5 × 0.1). They used to be left unpaired.
+    for (const std::string type : {"in_radius", "in_radius_with_obb", "in_box_with_obb"})
+        for (const std::string check : {"check_mapping", "direct_check"}) {
+            SCOPED_TRACE(type + " " + check);
+            SearchModel m;
+            m.Line(Array3(1, 0, 0), Array3(0, 0, 0), 10, true, 0.1);           // normal +y
+            m.Line(Array3(0, -0.15, 0), Array3(1, -0.15, 0), 10, false, 0.1);  // normal −y, body above it
+            ContactSearchSettings settings = Settings(type, check);
+            settings.condition_name = "ALMFrictionlessMortarContact";
+            ContactSearchProcess search(*m.main, settings, m.properties);
+            search.ExecuteInitialize();
+            search.ExecuteInitializeSolutionStep();
+            EXPECT_FALSE(m.Pairs().empty());
+            for (const auto& node : m.contact->Nodes()) {
+                if (!node->Is(SLAVE)) continue;
+                EXPECT_TRUE(node->Is(ACTIVE)) << "node " << node->Id();
+                if (check == "check_mapping") EXPECT_NEAR(node->GetValue(NORMAL_GAP), -0.15, 1e-12);
+            }
+        }
+}
+
+TEST(ContactSearch, InitialPenetrationBeyondReachIsAnInputError) {
+    SearchModel m;
+    m.Line(Array3(1, 0, 0), Array3(0, 0, 0), 10, true, 0.1);
+    m.Line(Array3(0, -0.5, 0), Array3(1, -0.5, 0), 10, false, 0.1);
+    ContactSearchSettings settings = Settings("in_radius_with_obb", "check_mapping");
+    settings.condition_name = "ALMFrictionlessMortarContact";
+    ContactSearchProcess search(*m.main, settings, m.properties);
+    search.ExecuteInitialize();
+    try {
+        search.ExecuteInitializeSolutionStep();
+        FAIL() << "no error for slave nodes 0.5 inside the master body";
+    } catch (const InputError& error) {
+        const std::string what = error.what();
+        EXPECT_NE(what.find("11 slave node(s)"), std::string::npos) << what;
+        EXPECT_NE(what.find("node 1 at depth 0.5"), std::string::npos) << what;
+        EXPECT_NE(what.find("search_factor = 3.5"), std::string::npos) << what;
+        EXPECT_NE(what.find("raise search_factor to at least 10.5"), std::string::npos) << what;
+    }
+    // The suggested factor makes the same configuration a paired, active one.
+    SearchModel again;
+    again.Line(Array3(1, 0, 0), Array3(0, 0, 0), 10, true, 0.1);
+    again.Line(Array3(0, -0.5, 0), Array3(1, -0.5, 0), 10, false, 0.1);
+    settings.search_factor = 10.5;
+    ContactSearchProcess wider(*again.main, settings, again.properties);
+    wider.ExecuteInitialize();
+    wider.ExecuteInitializeSolutionStep();
+    for (const auto& node : again.contact->Nodes())
+        if (node->Is(SLAVE)) EXPECT_TRUE(node->Is(ACTIVE)) << "node " << node->Id();
+}
+
 TEST(ContactSearch, SameOrientationIsNotPaired) {
     SearchModel m;
     m.Line(Array3(1, 0, 0), Array3(0, 0, 0), 10, true, 0.1);        // normal +y
