@@ -60,6 +60,12 @@ std::size_t UpdateSlip(Node& node, bool slip) {
     return changed ? 1 : 0;
 }
 
+/// Whether some pair covers the node: the explicit pass gave it a positive overlap area (NODAL_AREA = Σ_c ∫N_j over
+/// the pairs' overlaps; a node without the value has not been through a pass and counts as covered). A node that slid
+/// off every master face has no contact constraint left; kept ACTIVE, its multiplier had no row and kept its last value
+/// (a stale 1e15 on the sliding cylinders of the example collection).
+bool Covered(const Node& node) { return !node.Has(NODAL_AREA) || node.GetValue(NODAL_AREA) > 0.0; }
+
 /// v/|v|, or the zero vector for a zero v.
 Array3 Direction(const Array3& v) {
     const double norm = v.norm();
@@ -75,7 +81,7 @@ std::size_t ComputePenaltyFrictionlessActiveSet(ModelPart& model_part) {
         // A penalty node is in contact while the pairs push it: the transmitted ε Q < 0 (docs/theory/mortar.md §7).
         const double augmented_normal = Penalty(*node, process_info) * ContactUtilities::TransmittedWeightedGap(*node);
         node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, augmented_normal);
-        flips += UpdateActive(*node, augmented_normal < 0.0);
+        flips += UpdateActive(*node, augmented_normal < 0.0 && Covered(*node));
     }
     return flips;
 }
@@ -90,8 +96,9 @@ std::size_t ComputeALMFrictionlessActiveSet(ModelPart& model_part) {
         const double augmented_normal = k * lambda + penalty * NodalValue(*node, WEIGHTED_GAP);
         node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE,
                        k * lambda + penalty * ContactUtilities::TransmittedWeightedGap(*node));
-        const bool active = augmented_normal < 0.0;
+        const bool active = augmented_normal < 0.0 && Covered(*node);
         if (active && node->IsNot(ACTIVE)) lambda = augmented_normal / k;
+        if (!Covered(*node)) lambda = 0.0;
         flips += UpdateActive(*node, active);
     }
     return flips;
@@ -108,8 +115,9 @@ std::size_t ComputeALMFrictionlessComponentsActiveSet(ModelPart& model_part) {
         const double augmented_normal = k * normal.dot(lambda) + penalty * NodalValue(*node, WEIGHTED_GAP);
         node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE,
                        k * normal.dot(lambda) + penalty * ContactUtilities::TransmittedWeightedGap(*node));
-        const bool active = augmented_normal < 0.0;
+        const bool active = augmented_normal < 0.0 && Covered(*node);
         if (active && node->IsNot(ACTIVE)) lambda = normal * (augmented_normal / k);
+        if (!Covered(*node)) lambda.setZero();
         flips += UpdateActive(*node, active);
     }
     return flips;
@@ -175,7 +183,7 @@ std::array<std::size_t, 2> ComputePenaltyFrictionalActiveSet(ModelPart& model_pa
         const double penalty = Penalty(*node, process_info);
         const double transmitted_normal = penalty * ContactUtilities::TransmittedWeightedGap(*node);
         node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, transmitted_normal);
-        const bool active = transmitted_normal < 0.0;
+        const bool active = transmitted_normal < 0.0 && Covered(*node);
         flips[0] += UpdateActive(*node, active);
         if (!active) {  // the deactivation is the counted change; the stick/slip state is just reset
             NodalValue(*node, WEIGHTED_SLIP).setZero();
@@ -218,8 +226,9 @@ std::array<std::size_t, 2> ComputeALMFrictionalActiveSet(ModelPart& model_part, 
             k * normal.dot(lambda) + penalty * ContactUtilities::TransmittedWeightedGap(*node);
         node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, transmitted_normal);
         const Array3 trial = TrialTangentialTraction(*node, process_info, true);
-        const bool active = augmented_normal < 0.0;
+        const bool active = augmented_normal < 0.0 && Covered(*node);
         if (!active) {  // the deactivation is the counted change; the stick/slip state is just reset
+            if (!Covered(*node)) lambda.setZero();
             NodalValue(*node, WEIGHTED_SLIP).setZero();
             node->SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE, Array3(Array3::Zero()));
             flips[0] += UpdateActive(*node, false);

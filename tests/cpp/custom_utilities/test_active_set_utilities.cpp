@@ -81,6 +81,34 @@ TEST(ActiveSetUtilities, test_alm_frictionless_activation_and_deactivation) {
     EXPECT_EQ(ActiveSetUtilities::ComputeALMFrictionlessActiveSet(*m.root), 0u);
 }
 
+TEST(ActiveSetUtilities, test_a_node_no_pair_covers_leaves_the_active_set_with_its_multiplier) {
+    ActiveSetModel m;
+    Node& covered = m.Add(-0.1, true);
+    Node& slid_off = m.Add(-0.1, true);  // compressed, but its last pass found it in no pair's overlap
+    covered.SetValue(NODAL_AREA, 0.5);
+    slid_off.SetValue(NODAL_AREA, 0.0);
+    for (Node* node : {&covered, &slid_off}) node->FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE) = -3.0;
+    EXPECT_EQ(ActiveSetUtilities::ComputeALMFrictionlessActiveSet(*m.root), 1u);
+    EXPECT_TRUE(covered.Is(ACTIVE));
+    EXPECT_FALSE(slid_off.Is(ACTIVE));
+    EXPECT_EQ(slid_off.FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE), 0.0);
+    EXPECT_EQ(covered.FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE), -3.0);
+    // The same for the components and frictional families (vector multiplier) and the penalty ones.
+    slid_off.Set(ACTIVE, true);
+    slid_off.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) = Array3(0.5, -3.0, 0.0);
+    ActiveSetUtilities::ComputeALMFrictionlessComponentsActiveSet(*m.root);
+    EXPECT_FALSE(slid_off.Is(ACTIVE));
+    EXPECT_EQ(slid_off.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER), Array3(0, 0, 0));
+    slid_off.Set(ACTIVE, true);
+    slid_off.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) = Array3(0.5, -3.0, 0.0);
+    ActiveSetUtilities::ComputeALMFrictionalActiveSet(*m.root, false);
+    EXPECT_FALSE(slid_off.Is(ACTIVE));
+    EXPECT_EQ(slid_off.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER), Array3(0, 0, 0));
+    slid_off.Set(ACTIVE, true);
+    ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet(*m.root);
+    EXPECT_FALSE(slid_off.Is(ACTIVE));
+}
+
 TEST(ActiveSetUtilities, test_set_is_frozen_after_the_first_iteration_of_the_simplified_newton) {
     ActiveSetModel m;
     Node& node = m.Add(-0.1, false);
