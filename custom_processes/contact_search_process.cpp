@@ -7,7 +7,6 @@
 #include <limits>
 #include <optional>
 #include <sstream>
-#include <unordered_set>
 #include <unordered_map>
 
 #include <Eigen/Geometry>
@@ -298,7 +297,10 @@ void ContactSearchProcess::QueryCandidates(const Condition& slave, std::vector<s
         mTree.SearchInBox(lo, hi, results, mSettings.allocation_size);
         return;
     }
-    mTree.SearchInRadius(face.Center(), length, results, mSettings.allocation_size);
+    // A face starting inside the master body looks that much further: the masters it overlaps lie behind it.
+    const auto penetrating = mPenetratingFaces.find(&slave);
+    const double depth = penetrating == mPenetratingFaces.end() ? 0.0 : penetrating->second;
+    mTree.SearchInRadius(face.Center(), length + depth, results, mSettings.allocation_size);
 }
 
 ContactSearchProcess::CheckResult ContactSearchProcess::CheckCondition(const Condition& slave,
@@ -408,7 +410,8 @@ void ContactSearchProcess::FindInitialPenetration() {
             continue;
         }
         for (Condition* face : faces_of[hit.node]) {
-            mPenetratingFaces.insert(face);
+            double& deepest_of_face = mPenetratingFaces[face];
+            deepest_of_face = std::max(deepest_of_face, hit.depth);
             mPenetrationPairs.emplace_back(face, hit.master);
         }
         mPenetratingNodes.emplace_back(hit.node, hit.depth);

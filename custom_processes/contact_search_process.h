@@ -3,7 +3,7 @@
 
 #include <memory>
 #include <string>
-#include <unordered_set>
+#include <unordered_map>
 #include <vector>
 
 #include "contact_app/kernel/model_part.h"
@@ -149,7 +149,7 @@ private:
     bool mPenetrationChecked = false;                    // PairPenetratingNodes ran (first search)
     std::vector<std::pair<Node*, double>> mPenetratingNodes;  // found by it, with their depth, to activate
     std::vector<std::pair<Condition*, Condition*>> mPenetrationPairs;  // (slave face, master it penetrates)
-    std::unordered_set<const Condition*> mPenetratingFaces;          // slave faces with a penetrating node
+    std::unordered_map<const Condition*, double> mPenetratingFaces;  // slave faces with a penetrating node: depth
     std::vector<std::pair<Node*, Array3>> mStepJump;  // nodes moved for a dynamic search, and by how much
     std::vector<Dof*> mSymmetryMultipliers;            // fixed by ContactUtilities::FixSymmetryPlaneMultipliers
     Timings mTimings;
