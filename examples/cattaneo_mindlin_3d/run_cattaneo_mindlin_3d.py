@@ -475,6 +475,9 @@ def run(
             parameters,
             base_dir=parameters_path.parent,
             reporter=Reporter(quiet=quiet),
+            # The runner reports every step, NOT CONVERGED ones too (exit 1), so it goes on
+            # from them (the default stops at the first: docs/running.md "Non-convergence").
+            stop_on_non_convergence=False,
             full_ratio=ratio,
             mu=mu,
         )

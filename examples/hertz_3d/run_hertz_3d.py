@@ -219,6 +219,9 @@ def run(workdir: Path, refinement: int | None = None, quiet: bool = True) -> Her
             Parameters.from_file(parameters),
             base_dir=parameters.parent,
             reporter=Reporter(quiet=quiet),
+            # The runner reports every step, NOT CONVERGED ones too (exit 1), so it goes on
+            # from them (the default stops at the first: docs/running.md "Non-convergence").
+            stop_on_non_convergence=False,
         )
         analysis.Run()
         elapsed = time.perf_counter() - start

@@ -224,7 +224,13 @@ def run(
     contact = parameters["processes"]["contact_process_list"][0]["Parameters"]
     mu = float(contact["friction_coefficients"]["0"])
     frictional = VARIANTS[variant]["contact"] == "Frictional"
-    options = {"base_dir": parameters_path.parent, "reporter": Reporter(quiet=quiet)}
+    # The runner reports every step, NOT CONVERGED ones too (exit 1), so it goes on from them
+    # (the default stops at the first one: docs/running.md "Non-convergence").
+    options = {
+        "base_dir": parameters_path.parent,
+        "reporter": Reporter(quiet=quiet),
+        "stop_on_non_convergence": False,
+    }
     with working_directory(workdir):
         analysis = _RecordingAnalysis(ca.Model(), parameters, **options)
         analysis.mu, analysis.history = (mu if frictional else 0.0), []

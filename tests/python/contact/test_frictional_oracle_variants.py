@@ -79,8 +79,14 @@ pytestmark = pytest.mark.skipif(not SHARED.is_dir(), reason="../shared/kratos_ca
 def _run(case: str) -> StructuralMechanicsAnalysis:
     folder = ORACLE_DIR / "cases" / case
     parameters = Parameters.from_file(folder / "parameters.json")
+    # As the reference runs them: on past a step that does not converge (penalty stick ramp, step
+    # 14; the tests check convergence themselves). contact_app's default would stop there.
     analysis = StructuralMechanicsAnalysis(
-        ca.Model(), parameters, base_dir=folder, reporter=Reporter(quiet=True)
+        ca.Model(),
+        parameters,
+        base_dir=folder,
+        reporter=Reporter(quiet=True),
+        stop_on_non_convergence=False,
     )
     analysis.Run()
     return analysis
