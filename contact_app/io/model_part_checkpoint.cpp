@@ -132,7 +132,8 @@ private:
 
     void WriteData(const DataValueContainer& data, const std::string& owner) {
         mOut.PutSize(data.Size());
-        for (const auto& [variable, value] : data.Data()) {
+        for (const auto& [key, value] : data.Data()) {
+            const auto* variable = key;  // a structured binding cannot be captured before C++20 (clang)
             mOut.PutString(variable->Name());
             mOut.Put(static_cast<std::uint8_t>(value.index()));
             std::visit([&](const auto& v) { WriteValue(*variable, v, owner); }, value);
