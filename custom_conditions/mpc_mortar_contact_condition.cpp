@@ -43,6 +43,57 @@ double PairShare(const Node& node, const MortarOperators<double, TNS, TNM>& oper
     return paux > 0.0 ? 1.0 / paux : 0.0;
 }
 
+/// The Coulomb data of a slave node that slips with friction: μ and the unit slip direction e (TANGENT_XI made
+/// tangent to @p n). Empty (mu = 0) for a stick, frictionless, inactive or direction-less node.
+template <int TDim>
+struct SlipFriction {
+    double mu = 0.0;
+    Eigen::Matrix<double, TDim, 1> direction = Eigen::Matrix<double, TDim, 1>::Zero();
+    bool Applies() const { return mu > 0.0; }
+};
+
+template <int TDim>
+SlipFriction<TDim> SlipFrictionOf(const Node& node, const Eigen::Matrix<double, TDim, 1>& n) {
+    SlipFriction<TDim> result;
+    if (!IsActiveNode(node) || !node.Is(SLIP) || !node.Has(FRICTION_COEFFICIENT) || !node.Has(TANGENT_XI))
+        return result;
+    Eigen::Matrix<double, TDim, 1> e = node.GetValue(TANGENT_XI).head<TDim>();
+    e -= e.dot(n) * n;
+    const double mu = node.GetValue(FRICTION_COEFFICIENT);
+    if (!(mu > 0.0) || !(e.norm() > 0.0)) return result;
+    result.mu = mu;
+    result.direction = e.normalized();
+    return result;
+}
+
+/// The slave component a normal-only row is solved for: the largest |n_a|, or with friction the largest
+/// min(|n_a|, |v_a|), v = n − μe, because the test row divides by v_a (only different on a steep interface with a
+/// large μ: with μ < 1/√2 in 3D, 1 in 2D, argmax |n_a| has v_a ≠ 0).
+template <int TDim>
+Eigen::Index PivotComponent(const Eigen::Matrix<double, TDim, 1>& n, const Eigen::Matrix<double, TDim, 1>& v) {
+    Eigen::Index pivot = 0;
+    n.cwiseAbs().cwiseMin(v.cwiseAbs()).maxCoeff(&pivot);
+    return pivot;
+}
+
+/// Row @p row (slave node @p i, component @p pivot) of n·u_s = n·(Q u_m) + c with @p w in place of n, solved for
+/// u_s,pivot: (w_b / w_pivot) Q_ij on the master columns, −w_b / w_pivot on the node's other components.
+template <int TDim, class TRow>
+void WriteNormalRow(int i, int row, Eigen::Index pivot, double weight, const TRow& q,
+                    const Eigen::Matrix<double, TDim, 1>& w, Matrix& relation, Matrix& slave_coupling) {
+    for (Eigen::Index j = 0; j < q.size(); ++j)
+        for (int b = 0; b < TDim; ++b) {
+            const double value = w[b] * q[j] / w[pivot];
+            if (std::abs(value) > 1.0e-12) relation(row, j * TDim + b) = weight * value;
+        }
+    for (int b = 0; b < TDim; ++b)
+        if (b != pivot && std::abs(w[b]) > 1.0e-12) slave_coupling(row, i * TDim + b) = -weight * w[b] / w[pivot];
+}
+
+/// Below this cosine between the slip of the step and the kept direction, the direction is not the slip's (it is
+/// the stick force's of a node that has just started to slip) and the direction's tangent is left out.
+constexpr double kDirectionFromSlip = 0.9;
+
 }  // namespace
 
 #define MPC_TEMPLATE template <int TDim, int TNS, int TNM>
@@ -128,6 +179,13 @@ MPCConstraintRelation MPC_CLASS::ComputeConstraintRelation(const ProcessInfo& rC
     Eigen::Matrix<double, TNM, TDim> u2_previous;  // B7 done right: n_m master rows
     for (int j = 0; j < TNM; ++j) u2_previous.row(j) = PreviousDisplacement<TDim>(master[j]).transpose();
 
+    struct SlipRow {
+        int node, row;
+        Eigen::Index pivot;
+        double weight;
+        Eigen::Matrix<double, TDim, 1> v;
+    };
+    std::vector<SlipRow> slip_rows;
     MPCConstraintRelation result;
     result.relation.setZero(TDim * TNS, TDim * TNM);
     result.constant.setZero(TDim * TNS);
@@ -163,18 +221,26 @@ MPCConstraintRelation MPC_CLASS::ComputeConstraintRelation(const ProcessInfo& rC
         // the other slave components stay free DoFs (the tangential motion a slip or frictionless node needs). The
         // reference's rows n nᵀ(Q u_m) on every component tie the tangential slave motion to zero on a tilted
         // interface ([BUG?] B6).
-        Eigen::Index pivot = 0;
-        n.cwiseAbs().maxCoeff(&pivot);
+        const SlipFriction<TDim> friction = Is(SLIP) ? SlipFrictionOf<TDim>(node, n) : SlipFriction<TDim>();
+        const Eigen::Matrix<double, TDim, 1> v = n - friction.mu * friction.direction;
+        const Eigen::Index pivot = PivotComponent<TDim>(n, v);
         const int row = i * TDim + static_cast<int>(pivot);
-        const double n_pivot = n[pivot];
-        for (int j = 0; j < TNM; ++j)
-            for (int b = 0; b < TDim; ++b) {
-                const double value = n[b] * Q(i, j) / n_pivot;
-                if (std::abs(value) > 1.0e-12) result.relation(row, j * TDim + b) = weight * value;
-            }
-        for (int b = 0; b < TDim; ++b)
-            if (b != pivot && std::abs(n[b]) > 1.0e-12) result.slave_coupling(row, i * TDim + b) = -weight * n[b] / n_pivot;
-        result.constant[row] = normal_constant / n_pivot;
+        WriteNormalRow<TDim>(i, row, pivot, weight, Q.row(i), n, result.relation, result.slave_coupling);
+        result.constant[row] = normal_constant / n[pivot];
+        if (friction.Applies()) slip_rows.push_back({i, row, pivot, weight, v});
+    }
+    // The test rows of the slipping nodes: v = n − μe in place of n. The slave's residual r (its constraint force
+    // −r) then reaches the free components and the masters as λv = λn − μλe: the normal force λ and the Coulomb
+    // force μ|λ| along e, with λ the constraint force of the current iterate, linearised with it (docs §9).
+    if (!slip_rows.empty()) {
+        result.test_relation = result.relation;
+        result.test_slave_coupling = result.slave_coupling;
+        for (const SlipRow& s : slip_rows) {
+            result.test_relation.row(s.row).setZero();
+            result.test_slave_coupling.row(s.row).setZero();
+            WriteNormalRow<TDim>(s.node, s.row, s.pivot, s.weight, Q.row(s.node), s.v, result.test_relation,
+                           result.test_slave_coupling);
+        }
     }
     return result;
 }
@@ -190,6 +256,12 @@ void MPC_CLASS::UpdateConstraint(const ProcessInfo& rCurrentProcessInfo) {
     // Columns: the master components, then the slave components a normal-only row depends on.
     Matrix columns(full.relation.rows(), full.relation.cols() + full.slave_coupling.cols());
     columns << full.relation, full.slave_coupling;
+    const bool tested = full.test_relation.size() > 0;
+    Matrix test_columns;
+    if (tested) {
+        test_columns.resize(columns.rows(), columns.cols());
+        test_columns << full.test_relation, full.test_slave_coupling;
+    }
     std::vector<Eigen::Index> rows, cols;
     DofsVectorType slave_dofs, master_dofs;
     for (Eigen::Index r = 0; r < columns.rows(); ++r)
@@ -199,7 +271,7 @@ void MPC_CLASS::UpdateConstraint(const ProcessInfo& rCurrentProcessInfo) {
         }
     for (Eigen::Index c = 0; c < columns.cols(); ++c) {
         double sum = 0.0;
-        for (Eigen::Index r : rows) sum += std::abs(columns(r, c));
+        for (Eigen::Index r : rows) sum += std::abs(columns(r, c)) + (tested ? std::abs(test_columns(r, c)) : 0.0);
         if (!(sum > PruneTolerance)) continue;
         cols.push_back(c);
         const bool on_master = c < full.relation.cols();
@@ -215,6 +287,11 @@ void MPC_CLASS::UpdateConstraint(const ProcessInfo& rCurrentProcessInfo) {
     }
     constraint->SetDofList(slave_dofs, master_dofs, rCurrentProcessInfo);
     constraint->SetLocalSystem(relation, constant, rCurrentProcessInfo);
+    if (!tested) return;
+    Matrix test(relation.rows(), relation.cols());
+    for (std::size_t r = 0; r < rows.size(); ++r)
+        for (std::size_t c = 0; c < cols.size(); ++c) test(r, c) = test_columns(rows[r], cols[c]);
+    constraint->SetTestRelation(test, rCurrentProcessInfo);
 }
 
 MPC_TEMPLATE
@@ -225,14 +302,9 @@ void MPC_CLASS::CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRight
 }
 
 MPC_TEMPLATE
-void MPC_CLASS::CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo&) {
+void MPC_CLASS::CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) {
     rLeftHandSideMatrix.setZero(MatrixSize, MatrixSize);
-}
-
-MPC_TEMPLATE
-void MPC_CLASS::CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo& rCurrentProcessInfo) {
-    rRightHandSideVector.setZero(MatrixSize);
-    if (!Is(SLIP)) return;
+    if (!Is(SLIP) || !mPreviousMortarOperatorsInitialized) return;
     const Geometry& slave = GetParentGeometry();
     bool any_slip = false;
     for (int i = 0; i < TNS; ++i) any_slip = any_slip || (IsActiveNode(slave[i]) && slave[i].Is(SLIP));
@@ -240,25 +312,50 @@ void MPC_CLASS::CalculateRightHandSide(Vector& rRightHandSideVector, const Proce
     bool dual = false;
     const Operators operators = CurrentOperators(rCurrentProcessInfo, dual);
     const Eigen::Matrix<double, TNS, TNM> Q = ComputeQ(operators, dual);
+    const Operators& previous = mPreviousMortarOperators;
+    const auto normals = NodalNormals<TDim, TNS>(slave);
+    using VectorD = Eigen::Matrix<double, TDim, 1>;
+    using MatrixD = Eigen::Matrix<double, TDim, TDim>;
     for (int i = 0; i < TNS; ++i) {
         const Node& node = slave[i];
-        if (!IsActiveNode(node) || !node.Is(SLIP)) continue;
         if (Q.row(i).cwiseAbs().sum() == 0.0) continue;  // this pair does not overlap the node
-        const double share = PairShare(node, operators, i);
-        // The normal constraint force of the last iteration (explicit, as the reference); the direction is the slip
-        // direction the criteria keep in TANGENT_XI: the friction on the slave follows the master's relative motion.
-        const Eigen::Matrix<double, TDim, 1> n = node.FastGetSolutionStepValue(NORMAL).head<TDim>().normalized();
+        const VectorD n = normals.row(i).transpose().normalized();
+        const SlipFriction<TDim> friction = SlipFrictionOf<TDim>(node, n);
+        if (!friction.Applies() || !node.SolutionStepsDataHas(WEIGHTED_SLIP)) continue;
+        // λ: the normal constraint force of the current iterate (the reaction of a slipping node is λ(n − μe)).
         const double normal_force = node.FastGetSolutionStepValue(REACTION).head<TDim>().dot(n);
-        Eigen::Matrix<double, TDim, 1> direction = node.GetValue(TANGENT_XI).head<TDim>();
-        direction -= direction.dot(n) * n;
-        if (!(direction.norm() > 0.0) || !(normal_force < 0.0)) continue;
-        const Eigen::Matrix<double, TDim, 1> f =
-            (-node.GetValue(FRICTION_COEFFICIENT) * normal_force * share) * direction.normalized();
-        for (int a = 0; a < TDim; ++a) {
-            rRightHandSideVector[TDim * TNM + i * TDim + a] += f[a];
-            for (int j = 0; j < TNM; ++j) rRightHandSideVector[j * TDim + a] -= Q(i, j) * f[a];
-        }
+        const double area = node.Has(NODAL_AREA) ? node.GetValue(NODAL_AREA) : 0.0;
+        if (!(normal_force < 0.0) || !(area > 0.0)) continue;
+        VectorD slip = node.FastGetSolutionStepValue(WEIGHTED_SLIP).head<TDim>();
+        slip -= slip.dot(n) * n;
+        const double length = TDim == 2 ? area : std::sqrt(area);
+        if (!(slip.norm() > 1.0e-12 * area * length)) continue;  // round-off slip: no direction to linearise
+        const VectorD s = slip / slip.norm();
+        if (s.dot(friction.direction) < kDirectionFromSlip) continue;
+        // f = μ|λ| s/|s| with s the node's weighted slip of the step, Σ over its pairs of M⁰u_m − D⁰u_s (start-of-step
+        // operators; the current ones only add a normal part on coplanar faces): this pair's share of ds is S du, and
+        // df = μ|λ| P ds / |s| with P = I − ŝŝᵀ − nnᵀ. The slave rows are exact; the master rows spread this pair's
+        // share with its own Q (exact when the node's pairs project it alike, as on matching meshes).
+        Eigen::Matrix<double, TDim, MatrixSize> S = Eigen::Matrix<double, TDim, MatrixSize>::Zero();
+        for (int j = 0; j < TNM; ++j)
+            S.template block<TDim, TDim>(0, j * TDim) = previous.M(i, j) * MatrixD::Identity();
+        for (int k = 0; k < TNS; ++k)
+            S.template block<TDim, TDim>(0, TDim * TNM + k * TDim) = -previous.D(i, k) * MatrixD::Identity();
+        Eigen::Matrix<double, MatrixSize, TDim> B = Eigen::Matrix<double, MatrixSize, TDim>::Zero();
+        for (int j = 0; j < TNM; ++j) B.template block<TDim, TDim>(j * TDim, 0) = -Q(i, j) * MatrixD::Identity();
+        B.template block<TDim, TDim>(TDim * TNM + i * TDim, 0) = MatrixD::Identity();
+        const MatrixD P = MatrixD::Identity() - s * s.transpose() - n * n.transpose();
+        Matrix block = (-friction.mu * normal_force / slip.norm()) * (B * P * S);
+        // The row of the solved-for component is the constraint's, not an equation (its residual is the force λ).
+        const VectorD v = n - friction.mu * friction.direction;
+        block.row(TDim * TNM + i * TDim + static_cast<int>(PivotComponent<TDim>(n, v))).setZero();
+        rLeftHandSideMatrix -= block;  // the LHS is −d(force)/du
     }
+}
+
+MPC_TEMPLATE
+void MPC_CLASS::CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo&) {
+    rRightHandSideVector.setZero(MatrixSize);
 }
 
 MPC_TEMPLATE

@@ -14,6 +14,11 @@ struct MPCConstraintRelation {
     /// d n_s × d n_s: a normal-only row of slave node i (component a* = argmax |n_a|) depends on the node's other
     /// components, n·u_s = n·(Q u_m) + c solved for u_s,a* (docs/theory/mortar.md §9).
     Matrix slave_coupling;
+    /// The test relation of the rows (same shapes as relation and slave_coupling), empty when it is the relation
+    /// itself: a slipping node's row tests with v = n − μe instead of n, which carries the Coulomb force μ|λ| along
+    /// its slip direction e with the normal constraint force λ (docs/theory/mortar.md §9).
+    Matrix test_relation;
+    Matrix test_slave_coupling;
 };
 
 /// Mortar contact imposed through a multipoint constraint (Kratos MPCMortarContactCondition,
@@ -53,14 +58,17 @@ public:
     /// Previous operators recomputed if Is(SLIP) (start of the next step).
     void FinalizeSolutionStep(const ProcessInfo& rCurrentProcessInfo) override;
 
-    /// Zero LHS (MatrixSize²); RHS zero except the slip force of CalculateRightHandSide.
+    /// CalculateLeftHandSide and a zero RHS: the Coulomb force of a slipping node is carried by the constraint's
+    /// test relation (MPCConstraintRelation::test_relation), not by a nodal force.
     void CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
                               const ProcessInfo& rCurrentProcessInfo) override;
+    /// Zero (MatrixSize²) except, if Is(SLIP), the tangent of the slip direction of every SLIP slave node i whose
+    /// TANGENT_XI e is the direction of its slip of the step s (+WEIGHTED_SLIP made tangent to n): the Coulomb force
+    /// f = μ|λ| s/|s| (λ = REACTION·n) turns with s, df = μ|λ| P ds/|s|, P = I − ŝŝᵀ − nnᵀ, and this pair's share of
+    /// ds is M⁰_ij du_m,j − D⁰_ik du_s,k (start-of-step operators); f reaches the slave and, by −Q_ij, the masters.
+    /// The row of the component the normal row is solved for is left out (docs/theory/mortar.md §9).
     void CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) override;
-    /// If Is(SLIP): every SLIP slave node i gets its share of the Coulomb force f_i = −μ_i (F_i·n_i) e_i / NODAL_PAUX on
-    /// its rows and −Q_ij f_i on the master rows, F = historical REACTION (the normal constraint force of the last
-    /// iteration), n = NORMAL, μ = FRICTION_COEFFICIENT (non-historical), e = TANGENT_XI (the slip direction the
-    /// criteria keep, docs/theory/mortar.md §9).
+    /// Zero (MatrixSize).
     void CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo& rCurrentProcessInfo) override;
     void CalculateMassMatrix(Matrix& rMassMatrix, const ProcessInfo& rCurrentProcessInfo) override;
     void CalculateDampingMatrix(Matrix& rDampingMatrix, const ProcessInfo& rCurrentProcessInfo) override;
@@ -93,8 +101,8 @@ public:
     ///        shares, the pairs' rows assemble to the node's mortar row Σ_c M^c / Σ_c D^c_ii, negative entries
     ///        included.
     static Eigen::Matrix<double, TNumNodes, TNumNodesMaster> ComputeQ(const Operators& operators, bool dual);
-    /// Rebuilds the constraint of CONSTRAINT_POINTER (no-op without one): ComputeConstraintRelation, pruning,
-    /// SetDofList and SetLocalSystem.
+    /// Rebuilds the constraint of CONSTRAINT_POINTER (no-op without one): ComputeConstraintRelation, pruning (a column
+    /// stays if the relation or the test relation uses it), SetDofList, SetLocalSystem and SetTestRelation.
     void UpdateConstraint(const ProcessInfo& rCurrentProcessInfo);
 
     const Operators& GetPreviousMortarOperators() const { return mPreviousMortarOperators; }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 #include "contact_app/application.h"
@@ -85,6 +86,7 @@ bool MPCContactCriteria::PreCriteria(ModelPart& rModelPart, DofsArrayType&, cons
 bool MPCContactCriteria::PostCriteria(ModelPart& rModelPart, DofsArrayType&, const SparseMatrixType&,
                                       const SystemVectorType&, const SystemVectorType&, const BuilderAndSolver&) {
     mActiveFlips = mSlipFlips = mActiveNodes = mSlipNodes = 0;
+    mMaxTurn = 0.0;
     ProcessInfo& info = rModelPart.GetProcessInfo();
     if (!(info.Has(NL_ITERATION_NUMBER) && info.GetValue(NL_ITERATION_NUMBER) > 0)) return true;
     ModelPart* contact = ContactUtilities::FindContactPart(rModelPart, "Contact");
@@ -162,8 +164,11 @@ bool MPCContactCriteria::PostCriteria(ModelPart& rModelPart, DofsArrayType&, con
         }
         if (was_active && was_slip != slipping) ++mSlipFlips;
         // A slip direction that still turns is not converged either (docs/theory/mortar.md §9).
-        if (slipping && was_slip && previous.norm() > 0.0 && (direction - previous).norm() > kDirectionTolerance)
-            ++mSlipFlips;
+        if (slipping && was_slip && previous.norm() > 0.0) {
+            const double turn = (direction - previous).norm();
+            mMaxTurn = std::max(mMaxTurn, turn);
+            if (turn > kDirectionTolerance) ++mSlipFlips;
+        }
         node->Set(SLIP, slipping);
         node->SetValue(TANGENT_XI, slipping ? direction : Array3(Array3::Zero()));
         if (slipping) ++mSlipNodes;
@@ -180,7 +185,11 @@ bool MPCContactCriteria::PostCriteria(ModelPart& rModelPart, DofsArrayType&, con
 std::string MPCContactCriteria::LastNorms() const {
     std::ostringstream out;
     out << "active " << mActiveNodes << " (" << mActiveFlips << " changed)";
-    if (mSlipNodes > 0 || mSlipFlips > 0) out << ", slip " << mSlipNodes << " (" << mSlipFlips << " changed)";
+    if (mSlipNodes > 0 || mSlipFlips > 0) {
+        out << ", slip " << mSlipNodes << " (" << mSlipFlips << " changed";
+        if (mMaxTurn > 0.0) out << ", turn " << std::scientific << std::setprecision(1) << mMaxTurn;
+        out << ")";
+    }
     return out.str();
 }
 

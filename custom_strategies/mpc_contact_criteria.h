@@ -45,6 +45,8 @@ public:
     std::size_t LastSlipFlips() const { return mSlipFlips; }
     std::size_t ActiveNodes() const { return mActiveNodes; }
     std::size_t SlipNodes() const { return mSlipNodes; }
+    /// Largest change |e_new − e_old| of a slipping node's unit slip direction in the last update (0 if none).
+    double LastMaxDirectionTurn() const { return mMaxTurn; }
 
     /// @brief NODAL_MAUX := Σ over the SLAVE conditions of "Contact" holding the node of |face| / #nodes
     ///        (current configuration), on every node of "Contact". No-op without a "Contact" part.
@@ -52,6 +54,7 @@ public:
 
 private:
     std::size_t mActiveFlips = 0, mSlipFlips = 0, mActiveNodes = 0, mSlipNodes = 0;
+    double mMaxTurn = 0.0;
 };
 
 }  // namespace contact_app

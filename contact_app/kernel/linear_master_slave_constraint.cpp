@@ -46,6 +46,21 @@ void LinearMasterSlaveConstraint::SetLocalSystem(const Matrix& rTransformationMa
                   rConstantVector.size(), " constants, expected one per slave DoF (", slaves, ")");
     mRelation = rTransformationMatrix;
     mConstant = rConstantVector;
+    mTestRelation.resize(0, 0);
+}
+
+bool LinearMasterSlaveConstraint::CalculateTestRelation(Matrix& rTestRelation, const ProcessInfo&) {
+    rTestRelation = mTestRelation;
+    return mTestRelation.size() > 0;
+}
+
+void LinearMasterSlaveConstraint::SetTestRelation(const Matrix& rTestRelation, const ProcessInfo&) {
+    CONTACT_CHECK(rTestRelation.size() == 0 ||
+                      (rTestRelation.rows() == mRelation.rows() && rTestRelation.cols() == mRelation.cols()),
+                  InputError, Info(), ": SetTestRelation got a ", rTestRelation.rows(), "x", rTestRelation.cols(),
+                  " matrix, expected ", mRelation.rows(), "x", mRelation.cols(),
+                  " (the shape of the relation T)\n  fix: call SetLocalSystem first, then SetTestRelation");
+    mTestRelation = rTestRelation;
 }
 
 std::string LinearMasterSlaveConstraint::Info() const {

@@ -18,14 +18,19 @@ public:
                    const Vector& constant) const override;
     void CalculateLocalSystem(Matrix& rTransformationMatrix, Vector& rConstantVector,
                               const ProcessInfo& rCurrentProcessInfo) override;
+    /// Also drops the test relation (W = T until SetTestRelation): a new T makes the old W stale.
     /// @throws InputError if T is not slaves × masters or c not one entry per slave (set the DoF lists first)
     void SetLocalSystem(const Matrix& rTransformationMatrix, const Vector& rConstantVector,
                         const ProcessInfo& rCurrentProcessInfo) override;
+    bool CalculateTestRelation(Matrix& rTestRelation, const ProcessInfo& rCurrentProcessInfo) override;
+    /// @throws InputError if @p rTestRelation is neither empty nor of the shape of T
+    void SetTestRelation(const Matrix& rTestRelation, const ProcessInfo& rCurrentProcessInfo) override;
     std::string Info() const override;
 
 private:
     Matrix mRelation;
     Vector mConstant;
+    Matrix mTestRelation;  ///< empty: W = T
 };
 
 }  // namespace contact_app

@@ -51,6 +51,16 @@ void MasterSlaveConstraint::SetLocalSystem(const Matrix&, const Vector&, const P
                   "\n  fix: use a LinearMasterSlaveConstraint or a ContactMasterSlaveConstraint");
 }
 
+bool MasterSlaveConstraint::CalculateTestRelation(Matrix& rTestRelation, const ProcessInfo&) {
+    rTestRelation.resize(0, 0);
+    return false;
+}
+
+void MasterSlaveConstraint::SetTestRelation(const Matrix&, const ProcessInfo&) {
+    CONTACT_THROW(InputError, Info(), " does not store a test relation (SetTestRelation)",
+                  "\n  fix: use a LinearMasterSlaveConstraint or a ContactMasterSlaveConstraint");
+}
+
 void MasterSlaveConstraint::Apply(const ProcessInfo& rCurrentProcessInfo) {
     Matrix relation;
     Vector constant;

@@ -54,6 +54,14 @@ public:
     /// @throws InputError in the base (no stored relation) or if the sizes do not match the DoF lists
     virtual void SetLocalSystem(const Matrix& rTransformationMatrix, const Vector& rConstantVector,
                                 const ProcessInfo& rCurrentProcessInfo);
+    /// The test relation W (slaves × masters, the shape of T) when it differs from T: the builder then forms the
+    /// reduced system WᵀAT, Wᵀb instead of TᵀAT, Tᵀb, i.e. the residual of a slave DoF (its constraint force) reaches
+    /// the masters with the weights W. A force proportional to the constraint force (MPC Coulomb slip: μ|λ| along
+    /// the slip, λ the normal constraint force) is carried that way, with its dependence on λ in the tangent.
+    /// @return false (the base, every kinematic constraint): W = T
+    virtual bool CalculateTestRelation(Matrix& rTestRelation, const ProcessInfo& rCurrentProcessInfo);
+    /// Replaces W; an empty matrix means W = T. @throws InputError in the base or if the shape is not that of T
+    virtual void SetTestRelation(const Matrix& rTestRelation, const ProcessInfo& rCurrentProcessInfo);
     /// Sets the slave values to T · u_master + c.
     virtual void Apply(const ProcessInfo& rCurrentProcessInfo);
     virtual int Check(const ProcessInfo& rCurrentProcessInfo) const;

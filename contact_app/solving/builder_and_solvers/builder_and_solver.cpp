@@ -184,14 +184,18 @@ void BuilderAndSolver::BuildRelationMatrix(ModelPart& rModelPart) {
     std::vector<char>& is_slave = mIsSlave;
     is_slave.assign(n, 0);
     mConstrainedEquations.assign(n, 0);
-    std::vector<Eigen::Triplet<double, int>> triplets;
-    Matrix relation;
+    std::vector<Eigen::Triplet<double, int>> triplets, test_triplets;
+    Matrix relation, test;
     Vector constant;
     EquationIdVectorType slave_ids, master_ids;
+    mHasTestRelation = false;
     for (const auto& constraint : rModelPart.MasterSlaveConstraints()) {
         if (!IsAssembled(*constraint)) continue;
         constraint->CalculateLocalSystem(relation, constant, info);
         constraint->EquationIdVector(slave_ids, master_ids, info);
+        const bool own_test = constraint->CalculateTestRelation(test, info);
+        mHasTestRelation = mHasTestRelation || own_test;
+        const Matrix& weights = own_test ? test : relation;
         for (std::size_t s = 0; s < slave_ids.size(); ++s) {
             if (slave_ids[s] >= n) continue;  // an eliminated (fixed) slave keeps its prescribed value
             is_slave[slave_ids[s]] = 1;
@@ -199,23 +203,36 @@ void BuilderAndSolver::BuildRelationMatrix(ModelPart& rModelPart) {
             for (std::size_t m = 0; m < master_ids.size(); ++m) {
                 if (master_ids[m] >= n) continue;
                 mConstrainedEquations[master_ids[m]] = 1;
-                triplets.emplace_back(static_cast<int>(slave_ids[s]), static_cast<int>(master_ids[m]),
-                                      relation(static_cast<Eigen::Index>(s), static_cast<Eigen::Index>(m)));
+                const auto r = static_cast<Eigen::Index>(s), c = static_cast<Eigen::Index>(m);
+                triplets.emplace_back(static_cast<int>(slave_ids[s]), static_cast<int>(master_ids[m]), relation(r, c));
+                test_triplets.emplace_back(static_cast<int>(slave_ids[s]), static_cast<int>(master_ids[m]),
+                                           weights(r, c));
             }
         }
     }
     for (std::size_t i = 0; i < n; ++i)
-        if (!is_slave[i]) triplets.emplace_back(static_cast<int>(i), static_cast<int>(i), 1.0);
+        if (!is_slave[i]) {
+            triplets.emplace_back(static_cast<int>(i), static_cast<int>(i), 1.0);
+            test_triplets.emplace_back(static_cast<int>(i), static_cast<int>(i), 1.0);
+        }
     mT.resize(static_cast<int>(n), static_cast<int>(n));
     mT.setFromTriplets(triplets.begin(), triplets.end());  // duplicates (a slave in several constraints) are summed
+    mW.resize(0, 0);
+    if (mHasTestRelation) {
+        mW.resize(static_cast<int>(n), static_cast<int>(n));
+        mW.setFromTriplets(test_triplets.begin(), test_triplets.end());
+    }
 }
 
 void BuilderAndSolver::ApplyConstraints(Scheme&, ModelPart& rModelPart, SparseMatrixType& rA, SystemVectorType& rB) {
     mConstraintsApplied = HasActiveConstraints(rModelPart);
     if (!mConstraintsApplied) return;
     BuildRelationMatrix(rModelPart);
-    SparseMatrixType transformed = SparseMatrixType(mT.transpose()) * rA * mT;
-    rB = mT.transpose() * rB;
+    // Galerkin (TᵀAT) unless a constraint tests its slave's residual with other weights (WᵀAT, see
+    // MasterSlaveConstraint::CalculateTestRelation); the increments are always Δx = TΔx̃.
+    const SparseMatrixType& test = mHasTestRelation ? mW : mT;
+    SparseMatrixType transformed = SparseMatrixType(test.transpose()) * rA * mT;
+    rB = test.transpose() * rB;
     const double max_diagonal = transformed.diagonal().cwiseAbs().maxCoeff();
     for (int i = 0; i < transformed.rows(); ++i) {
         // A slave row is empty after the transformation: give it a well-scaled diagonal.
@@ -269,6 +286,8 @@ void BuilderAndSolver::Clear() {
     mEquationSystemSize = 0;
     mDofSetIsInitialized = false;
     mT.resize(0, 0);
+    mW.resize(0, 0);
+    mHasTestRelation = false;
     mConstrainedEquations.clear();
     mLinearSolver->Clear();
 }

@@ -27,7 +27,8 @@ struct BuilderAndSolverTimings {
 /// Derived classes decide the numbering and how Dirichlet DoFs are treated:
 /// BlockBuilderAndSolver keeps fixed DoFs in the system, EliminationBuilderAndSolver removes them.
 /// Master–slave constraints are applied through a global relation matrix T (A ← TᵀAT, b ← Tᵀb,
-/// Δx ← TΔx; ../shared/spec/kratos_structural.md §5.1).
+/// Δx ← TΔx; ../shared/spec/kratos_structural.md §5.1); a constraint with a test relation W of its own
+/// (MasterSlaveConstraint::CalculateTestRelation) makes it A ← WᵀAT, b ← Wᵀb.
 class BuilderAndSolver {
 public:
     using Pointer = std::shared_ptr<BuilderAndSolver>;
@@ -101,6 +102,8 @@ private:
 
     LinearSolver::Pointer mLinearSolver;
     SparseMatrixType mT;           // relation matrix of the last ApplyConstraints
+    SparseMatrixType mW;           // test relation (only when a constraint has its own, else empty)
+    bool mHasTestRelation = false;
     bool mConstraintsApplied = false;
     std::vector<char> mConstrainedEquations;
     std::vector<char> mIsSlave;

@@ -2,7 +2,8 @@
 /// MPCMortarContactCondition: zero local system on the displacement DoFs, the relation matrix of the three
 /// branches (frictionless, frictional stick/slip, tying) on matching and non-matching flat pairs, Q with its negative
 /// filter, the constant vector, pruning and the constraint DoF lists, the hooks that refresh the constraint, the
-/// explicit slip force and the explicit weighted gap / slip.
+/// test rows of the slipping nodes (Coulomb force), the slip direction's tangent against central differences and
+/// the explicit weighted gap / slip.
 #include <cstdio>
 #include <map>
 #include <random>
@@ -357,49 +358,61 @@ TEST(MPCMortarContactCondition, ActiveNodeWithoutNodalWeightIsAnInputError) {
     }
 }
 
-TEST(MPCMortarContactCondition, SlipRightHandSideIsTheCoulombForceAlongTheKeptSlipDirection) {
+TEST(MPCMortarContactCondition, SlipRowsAreTestedAlongTheCoulombForceAndTheRightHandSideIsZero) {
     for (const auto& suffix : kMatchingSuffixes) {
         const PairKind& kind = Kind(suffix);
         MPCPair p(kind);
-        const int d = kind.dim, ns = kind.num_slave;
+        const int d = kind.dim, ns = kind.num_slave, nm = kind.num_master;
         ProcessInfo info;
         p.pair->Set(SLIP, true);
-        p.Slave()[0].Set(SLIP, true);
-        p.Slave()[1].Set(SLIP, true);
+        // Node 0 slips with friction along t0, node 1 slips without (μ = 0), the others stick.
         const double mu = 0.4;
-        // Node 0 is held by this pair alone (its NODAL_AREA is the pair's D_00), node 1 by two pairs (share 1/2).
-        const double d_ii = std::abs(p.Slave().DomainSize()) / ns;
-        for (int i = 0; i < ns; ++i) {
-            p.Slave()[i].SetValue(FRICTION_COEFFICIENT, mu);
-            p.Slave()[i].SetValue(NODAL_AREA, i == 1 ? 2.0 * d_ii : d_ii);
-        }
-        // Node 0: compressive reaction with a tangential part, friction along its TANGENT_XI t0; node 1: along −x;
-        // node 2 (3D): stick, no force.
-        const Eigen::Vector3d n0 = p.Slave()[0].FastGetSolutionStepValue(NORMAL);
         const Eigen::Vector3d t0 = d == 2 ? Eigen::Vector3d(1, 0, 0) : Eigen::Vector3d(0.6, 0.8, 0.0);
-        p.Slave()[0].FastGetSolutionStepValue(REACTION) = -2.0 * n0 + 0.3 * t0;
+        for (int i = 0; i < 2; ++i) p.Slave()[i].Set(SLIP, true);
+        p.Slave()[0].SetValue(FRICTION_COEFFICIENT, mu);
         p.Slave()[0].SetValue(TANGENT_XI, Array3(t0));
-        p.Slave()[1].FastGetSolutionStepValue(REACTION) = -1.5 * p.Slave()[1].FastGetSolutionStepValue(NORMAL);
-        p.Slave()[1].SetValue(TANGENT_XI, Array3(-1.0, 0.0, 0.0));
-        if (d == 3) p.Slave()[2].FastGetSolutionStepValue(REACTION) = Array3(0.1, 0.2, -3.0);
+        p.Slave()[1].SetValue(FRICTION_COEFFICIENT, 0.0);
+        p.Slave()[1].SetValue(TANGENT_XI, Array3(t0));
+        const auto relation = p.Relation();
+        ASSERT_EQ(relation.test_relation.rows(), relation.relation.rows()) << suffix;
+        // Every row but node 0's pivot row (the normal component, d − 1 on these flat faces) is the relation's.
+        const int pivot_row = d - 1;
+        Eigen::MatrixXd other = relation.test_relation - relation.relation;
+        Eigen::MatrixXd other_coupling = relation.test_slave_coupling - relation.slave_coupling;
+        other.row(pivot_row).setZero();
+        other_coupling.row(pivot_row).setZero();
+        EXPECT_EQ(other.norm() + other_coupling.norm(), 0.0) << suffix;
+        // Node 0's row: n replaced by v = n − μ t0 (w = 1/2, Q the permutation of MatchingPair).
+        const Eigen::VectorXd n = p.Normal(0), v = n - mu * t0.head(d);
+        const Eigen::MatrixXd Q = MatchingQ(ns);
+        for (int j = 0; j < nm; ++j)
+            for (int b = 0; b < d; ++b) {
+                EXPECT_NEAR(relation.test_relation(pivot_row, j * d + b), 0.5 * Q(0, j) * v[b] / v[d - 1], 1e-14);
+                EXPECT_NEAR(relation.relation(pivot_row, j * d + b), 0.5 * Q(0, j) * n[b] / n[d - 1], 1e-14);
+            }
+        for (int b = 0; b < d - 1; ++b)
+            EXPECT_NEAR(relation.test_slave_coupling(pivot_row, b), -0.5 * v[b] / v[d - 1], 1e-14) << suffix;
+        // The constraint keeps the tangential columns the test row needs and stores W.
+        p.pair->Initialize(info);
+        Matrix T, W;
+        Vector c;
+        p.constraint->CalculateLocalSystem(T, c, info);
+        ASSERT_TRUE(p.constraint->CalculateTestRelation(W, info)) << suffix;
+        ASSERT_EQ(W.rows(), T.rows());
+        ASSERT_EQ(W.cols(), T.cols());
+        EXPECT_NEAR((W - T).cwiseAbs().maxCoeff(), 0.5 * mu * t0.head(d).cwiseAbs().maxCoeff() / std::abs(n[d - 1]), 1e-14)
+            << suffix;
+        // No LHS without a slip and a normal force, and never a RHS: the force is in W.
         Matrix lhs;
         Vector rhs;
         p.pair->CalculateLocalSystem(lhs, rhs, info);
         EXPECT_EQ(lhs.norm(), 0.0);
-        const int offset = d * kind.num_master;
-        const Eigen::VectorXd f0 = rhs.segment(offset, d), f1 = rhs.segment(offset + d, d);
-        EXPECT_LT((f0 - mu * 2.0 * t0.head(d)).norm(), 1e-14) << suffix;  // |f| = μ|F·n|, along TANGENT_XI
-        EXPECT_LT((f1 - 0.5 * Eigen::Vector3d(-mu * 1.5, 0, 0).head(d)).norm(), 1e-14) << suffix;  // half: two pairs
-        if (d == 3) EXPECT_EQ(rhs.tail(rhs.size() - offset - 2 * d).norm(), 0.0);
-        // The master side carries the opposite force, spread by Q (here the permutation of MatchingPair).
-        const Eigen::MatrixXd Q = MatchingQ(ns);
-        for (int j = 0; j < kind.num_master; ++j) {
-            const Eigen::VectorXd expected = -(Q(0, j) * f0 + Q(1, j) * f1);
-            EXPECT_LT((rhs.segment(j * d, d) - expected).norm(), 1e-14) << suffix << " master " << j;
-        }
-        p.pair->Set(SLIP, false);  // frictionless condition: no force at all
-        p.pair->CalculateRightHandSide(rhs, info);
+        EXPECT_EQ(rhs.size(), d * (ns + nm));
         EXPECT_EQ(rhs.norm(), 0.0);
+        // Without friction W = T.
+        p.Slave()[0].SetValue(FRICTION_COEFFICIENT, 0.0);
+        p.pair->InitializeSolutionStep(info);
+        EXPECT_FALSE(p.constraint->CalculateTestRelation(W, info)) << suffix;
     }
 }
 
@@ -434,6 +447,98 @@ TEST(MPCMortarContactCondition, ExplicitContributionAddsWeightedGapAreaAndSlip) 
         const Array3 slip = p.Slave()[j].FastGetSolutionStepValue(WEIGHTED_SLIP);
         EXPECT_GT(std::abs(slip[0]), 1e-3) << j;
         EXPECT_NEAR(slip.head(2).dot(p.Normal(j)), 0.0, 1e-14) << j;  // tangential
+    }
+}
+
+/// The slip direction's tangent of CalculateLeftHandSide against central differences of the Coulomb force
+/// f_i = μ|λ_i| ŝ_i(u) (ŝ from the weighted slip of the explicit pass, λ and n held), spread to the masters by the
+/// pair's Q. One pair per node (NODAL_AREA its own), so the master rows are exact too. The pivot rows are the
+/// constraint's and are left out. 2D: the direction cannot turn, the LHS is zero.
+TEST(MPCMortarContactCondition, SlipDirectionTangentMatchesCentralDifferences) {
+    for (const std::string suffix : {"2D2N", "3D3N", "3D4N", "3D4N3N", "3D3N4N"}) {
+        const PairKind& kind = Kind(suffix);
+        const bool matching = kind.num_slave == kind.num_master;
+        MPCPair p(kind, matching, 1.0, 3);
+        const int d = kind.dim, ns = kind.num_slave, nm = kind.num_master, size = d * (ns + nm);
+        ProcessInfo info;
+        p.pair->Set(SLIP, true);
+        p.pair->Initialize(info);  // start-of-step operators
+        const Eigen::Vector3d slide(0.02, d == 3 ? 0.011 : 0.0, 0.0);
+        for (int j = 0; j < nm; ++j)
+            for (int a = 0; a < d; ++a) Move(p.Master()[j], a, slide[a]);
+        const double mu = 0.3;
+        std::vector<Eigen::VectorXd> normals;
+        for (int i = 0; i < ns; ++i) {
+            normals.push_back(p.Normal(i));
+            p.Slave()[i].Set(SLIP, true);
+            p.Slave()[i].SetValue(FRICTION_COEFFICIENT, mu);
+            Array3 reaction = Array3::Zero();
+            reaction.head(d) = -(1.0 + i) * normals[i];  // λ_i = −(1 + i)
+            p.Slave()[i].FastGetSolutionStepValue(REACTION) = reaction;
+        }
+        auto explicit_pass = [&] {
+            for (int i = 0; i < ns; ++i) {
+                p.Slave()[i].FastGetSolutionStepValue(WEIGHTED_SLIP) = Array3::Zero();
+                p.Slave()[i].FastGetSolutionStepValue(WEIGHTED_GAP) = 0.0;
+                p.Slave()[i].SetValue(NODAL_AREA, 0.0);
+            }
+            p.pair->AddExplicitContribution(info);
+        };
+        auto direction = [&](int i) {
+            Eigen::VectorXd s = p.Slave()[i].FastGetSolutionStepValue(WEIGHTED_SLIP).head(d);
+            s -= s.dot(normals[i]) * normals[i];
+            return s.norm() > 1.0e-9 ? Eigen::VectorXd(s / s.norm()) : Eigen::VectorXd(Eigen::VectorXd::Zero(d));
+        };
+        explicit_pass();
+        for (int i = 0; i < ns; ++i) {
+            Array3 e = Array3::Zero();
+            e.head(d) = direction(i);
+            p.Slave()[i].SetValue(TANGENT_XI, e);
+        }
+        // Q of the pair: the full-tie relation (weight 1) of the same state.
+        p.pair->Set(SLIP, false);
+        p.pair->Set(RIGID, true);
+        const auto tie = p.Relation();
+        p.pair->Set(RIGID, false);
+        p.pair->Set(SLIP, true);
+        auto force = [&] {
+            explicit_pass();
+            Eigen::VectorXd F = Eigen::VectorXd::Zero(size);
+            for (int i = 0; i < ns; ++i) {
+                const Eigen::VectorXd f = mu * (1.0 + i) * direction(i);
+                F.segment(d * nm + d * i, d) += f;
+                for (int j = 0; j < nm; ++j) F.segment(d * j, d) -= tie.relation(i * d, j * d) * f;
+            }
+            return F;
+        };
+        explicit_pass();
+        Matrix lhs;
+        p.pair->CalculateLeftHandSide(lhs, info);
+        ASSERT_EQ(lhs.rows(), size);
+        if (d == 2) {
+            EXPECT_EQ(lhs.norm(), 0.0);
+            continue;
+        }
+        ASSERT_GT(lhs.norm(), 1.0) << suffix;
+        const double h = 1.0e-7;
+        Eigen::MatrixXd fd(size, size);
+        for (int k = 0; k < size; ++k) {
+            Node& node = k < d * nm ? p.Master()[k / d] : p.Slave()[(k - d * nm) / d];
+            Move(node, k % d, h);
+            const Eigen::VectorXd plus = force();
+            Move(node, k % d, -2.0 * h);
+            const Eigen::VectorXd minus = force();
+            Move(node, k % d, h);
+            fd.col(k) = -(plus - minus) / (2.0 * h);
+        }
+        for (int i = 0; i < ns; ++i) {  // the pivot: largest min(|n_a|, |v_a|), v = n − μe (here the largest |n_a|)
+            const Eigen::VectorXd e = p.Slave()[i].GetValue(TANGENT_XI).head(d);
+            Eigen::Index pivot = 0;
+            normals[i].cwiseAbs().cwiseMin((normals[i] - mu * e).cwiseAbs()).maxCoeff(&pivot);
+            fd.row(d * nm + d * i + pivot) = lhs.row(d * nm + d * i + pivot);
+        }
+        const double error = (fd - lhs).cwiseAbs().maxCoeff();
+        EXPECT_LT(error, 1.0e-6 * lhs.cwiseAbs().maxCoeff()) << suffix << ": max |LHS - FD| = " << error;
     }
 }
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// ContactMasterSlaveConstraint: registration, Create, the SetDofList / SetLocalSystem refresh used by the MPC
-/// condition (with its size checks), Apply, and the base class refusing SetLocalSystem.
+/// condition (with its size checks), the test relation, Apply, and the base class refusing SetLocalSystem.
 #include <gtest/gtest.h>
 
 #include "contact_app/application.h"
@@ -85,6 +85,26 @@ TEST_F(ContactMasterSlaveConstraintTest, ConditionRefreshReplacesDofsRelationAnd
     EXPECT_NO_THROW(constraint.FinalizeNonLinearIteration(info));
     constraint.CalculateLocalSystem(T, c, info);
     EXPECT_EQ(T, relation);  // FinalizeNonLinearIteration leaves the relation alone
+}
+
+TEST_F(ContactMasterSlaveConstraintTest, TestRelationHasTheShapeOfTAndANewTDropsIt) {
+    ContactMasterSlaveConstraint constraint(1);
+    const ProcessInfo info;
+    constraint.SetDofList({DofOf(1, DISPLACEMENT_Y)}, {DofOf(2, DISPLACEMENT_Y), DofOf(3, DISPLACEMENT_X)}, info);
+    Matrix relation(1, 2), test(1, 2), got;
+    relation << 0.5, 0.5;
+    test << 0.5, 0.2;
+    constraint.SetLocalSystem(relation, Vector::Zero(1), info);
+    EXPECT_FALSE(constraint.CalculateTestRelation(got, info));  // W = T
+    EXPECT_THROW(constraint.SetTestRelation(Matrix::Zero(2, 2), info), InputError);
+    constraint.SetTestRelation(test, info);
+    ASSERT_TRUE(constraint.CalculateTestRelation(got, info));
+    EXPECT_EQ(got, test);
+    constraint.SetLocalSystem(relation, Vector::Zero(1), info);  // a new T makes the old W stale
+    EXPECT_FALSE(constraint.CalculateTestRelation(got, info));
+    MasterSlaveConstraint base(2);
+    EXPECT_FALSE(base.CalculateTestRelation(got, info));
+    EXPECT_THROW(base.SetTestRelation(test, info), InputError);
 }
 
 TEST_F(ContactMasterSlaveConstraintTest, BaseConstraintRefusesSetLocalSystem) {

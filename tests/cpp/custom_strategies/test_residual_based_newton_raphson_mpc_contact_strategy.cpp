@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// ResidualBasedNewtonRaphsonMPCContactStrategy: nodal weights, settings checks, and the two-block patch of the
-/// reference case (gap closed, force balance) in the three loop variants, and pulled apart (contact released).
+/// reference case (gap closed, force balance) in the three loop variants, pulled apart (contact released), and the
+/// reduced system of slipping nodes against the Coulomb equilibrium and its central differences.
 #include <gtest/gtest.h>
 
 #include "contact_app/kernel/constitutive_law.h"
@@ -178,6 +179,108 @@ TEST(ResidualBasedNewtonRaphsonMPCContactStrategy, PullingApartReleasesTheContac
     for (IndexType n : {5, 6}) EXPECT_NEAR(p.U(n, 1), 0.2, 1e-12);  // the free upper block translates
     EXPECT_FALSE(p.root->GetMasterSlaveConstraint(1).Is(ACTIVE));
     EXPECT_FALSE(p.root->GetSubModelPart("ComputingContact").GetCondition(20).Is(ACTIVE));
+}
+
+/// A slipping node's test row carries the Coulomb force with the normal constraint force of the current state:
+/// after a press, the slave nodes 3 and 4 slip along +x (μ = 0.3) while the masters are sheared. The reduced
+/// system of the builder, WᵀAT and Wᵀb, is compared with the Coulomb equilibrium written out: every slave's
+/// constraint force λn + f with f = −μλe, λ from the normal component of its equilibrium (r + f + λn)·y = 0, the
+/// masters loaded by −Q f; G = Tᵀ(r + F). Its tangent is checked against central differences of G (slaves
+/// following u_s = T u_m + c).
+TEST(ResidualBasedNewtonRaphsonMPCContactStrategy, SlipTestRowsGiveTheCoulombResidualAndItsTangent) {
+    TwoBlockPatch p(-0.2, false, false);
+    ASSERT_TRUE(p.converged);
+    ModelPart& root = *p.root;
+    const ProcessInfo& info = root.GetProcessInfo();
+    auto pair = root.GetSubModelPart("ComputingContact").pGetCondition(20);
+    const double mu = 0.3;
+    pair->Set(SLIP, true);
+    for (IndexType n : {3, 4}) {
+        root.GetNode(n).Set(SLIP, true);
+        root.GetNode(n).SetValue(FRICTION_COEFFICIENT, mu);
+        root.GetNode(n).SetValue(TANGENT_XI, Array3(1.0, 0.0, 0.0));
+    }
+    pair->InitializeSolutionStep(info);
+    MasterSlaveConstraint* constraint = &root.GetMasterSlaveConstraint(1);
+    Matrix W;
+    ASSERT_TRUE(constraint->CalculateTestRelation(W, info));
+    root.GetNode(5).FastGetSolutionStepValue(DISPLACEMENT)[0] += 1.0e-3;
+    root.GetNode(6).FastGetSolutionStepValue(DISPLACEMENT)[0] += 2.0e-3;
+    constraint->Apply(info);
+
+    EliminationBuilderAndSolver builder(CreateLinearSolver({}));
+    Scheme scheme;
+    builder.SetUpDofSet(scheme, root);
+    builder.SetUpSystem(root);
+    SparseMatrixType A;
+    SystemVectorType dx, b;
+    builder.ResizeAndInitializeVectors(scheme, A, dx, b, root);
+    builder.Build(scheme, root, A, b);
+    builder.ApplyConstraints(scheme, root, A, b);
+    const Eigen::MatrixXd reduced(A);
+    const auto size = static_cast<Eigen::Index>(builder.GetEquationSystemSize());
+
+    // G = Tᵀ(r + F) from the assembled residual r of the current state.
+    auto coulomb_residual = [&] {
+        SystemVectorType r;
+        builder.BuildRHS(scheme, root, r);
+        Matrix T;
+        Vector c;
+        EquationIdVectorType slaves, masters;
+        constraint->CalculateLocalSystem(T, c, info);
+        constraint->EquationIdVector(slaves, masters, info);
+        Eigen::VectorXd F = Eigen::VectorXd::Zero(size);
+        for (std::size_t s = 0; s < slaves.size(); ++s) {
+            const Dof* dof = constraint->GetSlaveDofsVector()[s];
+            const Node& node = dof->GetNode();
+            const Eigen::Vector2d n = node.FastGetSolutionStepValue(NORMAL).head<2>();
+            const double lambda = -r[static_cast<Eigen::Index>(slaves[s])] / n[1];  // e·y = 0
+            const double f = -mu * lambda;                                           // along e = +x
+            F[static_cast<Eigen::Index>(node.GetDof(DISPLACEMENT_X).EquationId())] += f;
+            for (std::size_t m = 0; m < masters.size(); ++m) {  // Q from the y columns of T (weight 1, n_y / n_y)
+                const Dof* master = constraint->GetMasterDofsVector()[m];
+                if (&master->GetVariable() != &DISPLACEMENT_Y || master->GetNode().Is(SLAVE)) continue;
+                F[static_cast<Eigen::Index>(master->GetNode().GetDof(DISPLACEMENT_X).EquationId())] -=
+                    T(static_cast<Eigen::Index>(s), static_cast<Eigen::Index>(m)) * f;
+            }
+        }
+        Eigen::VectorXd G = r + F;
+        for (std::size_t s = 0; s < slaves.size(); ++s)
+            for (std::size_t m = 0; m < masters.size(); ++m)
+                if (masters[m] < static_cast<std::size_t>(size))
+                    G[static_cast<Eigen::Index>(masters[m])] +=
+                        T(static_cast<Eigen::Index>(s), static_cast<Eigen::Index>(m)) *
+                        (r[static_cast<Eigen::Index>(slaves[s])]);  // F has no y component on the slave
+        for (std::size_t s = 0; s < slaves.size(); ++s) G[static_cast<Eigen::Index>(slaves[s])] = 0.0;
+        return G;
+    };
+    const Eigen::VectorXd G = coulomb_residual();
+    EXPECT_GT(G.norm(), 1.0);
+    EXPECT_LT((Eigen::VectorXd(b) - G).cwiseAbs().maxCoeff(), 1e-9 * G.cwiseAbs().maxCoeff());
+
+    std::vector<char> is_slave(static_cast<std::size_t>(size), 0);
+    EquationIdVectorType slaves, masters;
+    constraint->EquationIdVector(slaves, masters, info);
+    for (auto id : slaves) is_slave[id] = 1;
+    const double h = 1.0e-6;
+    double error = 0.0;
+    for (Dof* dof : builder.GetDofSet()) {
+        const auto k = static_cast<Eigen::Index>(dof->EquationId());
+        if (k >= size || is_slave[static_cast<std::size_t>(k)]) continue;
+        dof->GetSolutionStepValue() += h;
+        constraint->Apply(info);
+        const Eigen::VectorXd plus = coulomb_residual();
+        dof->GetSolutionStepValue() -= 2.0 * h;
+        constraint->Apply(info);
+        const Eigen::VectorXd minus = coulomb_residual();
+        dof->GetSolutionStepValue() += h;
+        constraint->Apply(info);
+        const Eigen::VectorXd column = -(plus - minus) / (2.0 * h);
+        for (Eigen::Index row = 0; row < size; ++row)
+            if (!is_slave[static_cast<std::size_t>(row)])
+                error = std::max(error, std::abs(column[row] - reduced(row, k)));
+    }
+    EXPECT_LT(error, 1e-6 * reduced.cwiseAbs().maxCoeff()) << "max |WᵀAT − (−dG/dũ)| = " << error;
 }
 
 }  // namespace

@@ -635,18 +635,22 @@ def test_mpc_frictional_sticks_and_slides_with_mu_times_the_normal_force(
     - stick steps equal ALM's (matching: F_t = 1.612334549 in 2D, 1.259920954 in 3D, both);
       non-matching 1.4e-5 (2D) and 1e-5 (3D) apart;
     - slip: 2D F_t/(mu N) - 1 = 1.8e-7 (matching and non-matching, within the tilt bound 3e-6);
-      3D F_t equal to ALM's to 1.2e-7 (matching) and 9e-7 (non-matching), both 3e-5 under mu N at
-      t = 5 (the Poisson contraction of the block);
-    - iterations 1, 1, 1, 5, 1 (2D) and 1, 1, 1, 10, 6 (3D): the normal force of the Coulomb
-      bound and the slip direction are those of the last iteration (explicit, as the reference),
-      so the slip steps converge linearly to the 1e-10 tolerance.
+      3D F_t equal to ALM's to 2.7e-7 / 1.9e-9 (matching, t = 4 / 5) and 3.9e-8 / 4.3e-9
+      (non-matching), both 3e-5 under mu N at t = 5 (the Poisson contraction of the block);
+    - iterations on the slip steps t = 4, 5: 5, 1 (2D, both) and 5, 3 (3D, both); the 2D step 4
+      is the slip set growing one node per iteration (4, 5, 6, 7 slipping). The slip rows test
+      with n - mu e, so the Coulomb force takes the normal constraint force of the current
+      iterate with its tangent, and the pairs linearise the slip direction: in 3D the direction
+      turns by 0.47, 0.11, 1.8e-3, 1.3e-6 at t = 4. Before (normal force and direction of the
+      last iteration, explicit): 5, 1 (2D) and 10, 6 / 9, 6 (3D), the direction converging
+      linearly (docs/theory/mortar.md section 9).
     """
     states = run_stick_slip(tmp_path / "mpc", MPC, foundation_divisions=foundation_divisions)
     alm = run_stick_slip(tmp_path / "alm", foundation_divisions=foundation_divisions)
     matching = foundation_divisions in (MATCHING, MATCHING_3D)
     for state in states:
         assert state.record.converged, f"step at t = {state.record.time}"
-        assert state.record.iterations <= 12
+        assert state.record.iterations <= 6, f"step at t = {state.record.time}"
         assert state.base_reaction == pytest.approx(state.applied_load, rel=1.0e-9)
         assert state.active == state.slave_nodes
     # Both tie the stuck slave to the mortar projection of the master.
