@@ -140,13 +140,15 @@ inline void EquationIdsOf(const DofsVectorType& dofs, EquationIdVectorType& ids)
 }
 
 /// The pair integrated in its current configuration for an explicit pass, and the state the residuals see there.
-/// @return false (and ISOLATED set, share invalid) when the pair does not overlap or was already isolated
+/// Every pass decides ISOLATED afresh from this configuration: a pair is reused from step to step while its slave
+/// face slides, so a pair that did not overlap its master when the search made it may overlap it later (a flag kept
+/// from an earlier pass left such pairs out of NODAL_AREA and of the residual: docs/theory/mortar.md §1).
+/// @return false (and ISOLATED set, share invalid) when the pair does not overlap now
 template <int TDim, int TNS, int TNM, class TCondition>
 bool IntegrateForExplicitPass(TCondition& condition, const ProcessInfo& process_info,
                               typename TCondition::template State<double>& state) {
     PairNodalShare<TDim, TNS>& share = condition.MutableNodalShare();
     share = PairNodalShare<TDim, TNS>{};
-    if (condition.Is(ISOLATED)) return false;  // its residual is zero for the rest of the step: no share either
     const Geometry& slave = condition.GetParentGeometry();
     const MortarIntegrator<TDim, TNS, TNM, double> integrator(condition.IntegrationSettings(),
                                                               condition.SegmentationSettingsFrom(process_info));
@@ -161,10 +163,8 @@ bool IntegrateForExplicitPass(TCondition& condition, const ProcessInfo& process_
         integrator, finite_sliding ? state.x1 : MeshCoordinates<TDim, TNS>(slave),
         ToSpatialVector<TDim>(condition.GetValue(NORMAL)),
         finite_sliding ? state.x2 : MeshCoordinates<TDim, TNM>(master), state.normals, true);
-    if (!pair.used) {
-        condition.Set(ISOLATED, true);
-        return false;
-    }
+    condition.Set(ISOLATED, !pair.used);
+    if (!pair.used) return false;
     state.operators = pair.operators;
     share.valid = true;
     return true;
