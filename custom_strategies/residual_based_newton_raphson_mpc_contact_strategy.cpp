@@ -119,7 +119,10 @@ bool ResidualBasedNewtonRaphsonMPCContactStrategy::NewtonLoop() {
         mScheme->FinalizeNonLinIteration(mModelPart, mA, mDx, mB);
         // The criterion reads the contact forces from the reactions of the constraint slaves.
         mBuilder->CalculateReactions(*mScheme, mModelPart, mA, mDx, mB);
-        if (!pre) continue;
+        if (!pre) {
+            NotifyIteration();
+            continue;
+        }
         if (mCriteria->GetActualizeRHSflag()) mBuilder->BuildRHS(*mScheme, mModelPart, mB);
         converged = mCriteria->PostCriteria(mModelPart, mBuilder->GetDofSet(), mA, mDx, mB, *mBuilder);
         // A changed active (or stick/slip) set changes the rows of T: none for inactive slave nodes, normal-only
@@ -129,6 +132,7 @@ bool ResidualBasedNewtonRaphsonMPCContactStrategy::NewtonLoop() {
         mHistory.push_back(mCriteria->LastNorms());
         if (mSettings.echo_level >= 2)
             std::cout << "  MPC Newton iteration " << mIterations << ": " << mHistory.back() << "\n";
+        NotifyIteration();
     }
     return converged;
 }

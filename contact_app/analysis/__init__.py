@@ -9,7 +9,7 @@ from .analysis_stage import AnalysisStage
 from .materials import MaterialsReader, ReadMaterials
 from .paths import PathResolver
 from .process_factory import KratosProcessFactory
-from .reporting import Reporter, StepRecord
+from .reporting import IterationStatus, Reporter, StepRecord
 from .solvers import (
     CreateSolver,
     CreateSolverByParameters,
@@ -33,6 +33,7 @@ __all__ = [
     "MechanicalSolver",
     "PathResolver",
     "ReadMaterials",
+    "IterationStatus",
     "Reporter",
     "StaticMechanicalSolver",
     "StepRecord",

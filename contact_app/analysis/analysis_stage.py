@@ -36,7 +36,7 @@ from typing import Any
 import contact_app as ca
 
 from ..parameters import Parameters
-from .reporting import Reporter, StepRecord
+from .reporting import IterationStatus, Reporter, StepRecord
 from .solvers.mechanical_solver import STOP_DEFAULT_REASON
 from .time_loop import keep_advancing
 
@@ -142,6 +142,7 @@ class AnalysisStage:
                 self._last_delta = self.time - previous
                 builder = solver.GetBuilderAndSolver()
                 builder.ResetTimings()
+                self.reporter.begin_step(int(solver.GetComputingModelPart().ProcessInfo[ca.STEP]))
                 converged = self._TrySolveStep()
                 cutting = self._StepCutting() if not converged else None
                 if cutting is not None:
@@ -172,10 +173,20 @@ class AnalysisStage:
         """
         solver = self._GetSolver()
         self._failure = None
+        strategy = solver.GetSolutionStrategy()
+        observed = self.reporter.live and hasattr(strategy, "SetIterationObserver")
+        if observed:  # the live Newton line of a long step (the echo_level >= 2 lines replace it)
+            observed = self.echo_level < 2 and _solver_echo_level(solver) < 2
         try:
             self.InitializeSolutionStep()
             solver.Predict()
-            converged = bool(solver.SolveSolutionStep())
+            if observed:
+                strategy.SetIterationObserver(self._ReportIteration)
+            try:
+                converged = bool(solver.SolveSolutionStep())
+            finally:
+                if observed:  # the strategy must not keep the stage alive through a cycle
+                    strategy.SetIterationObserver(None)
         except ca.InvertedElementError as failure:
             logger.warning(
                 "TIME = %.6g: the step did not converge: %s", self.time, _first_line(failure)
@@ -442,6 +453,21 @@ class AnalysisStage:
             status() if status is not None else None,
         )
 
+    def _ReportIteration(self) -> None:
+        """The strategy's iteration observer: the live line of a step that takes long."""
+        solver = self._GetSolver()
+        solve = float(solver.GetBuilderAndSolver().GetTimings().get("solve", 0.0))
+        if not self.reporter.wants_iteration():  # a short step: only the solver's clock
+            iteration = int(solver.GetSolutionStrategy().GetIterationNumber())
+            self.reporter.iteration(IterationStatus(iteration, linear_solve=solve))
+            return
+        record = self._StepRecord(False)
+        self.reporter.iteration(
+            IterationStatus(
+                record.iterations, record.residual, record.increment, record.contact, solve
+            )
+        )
+
     def _StopOnNonConvergence(self) -> None:
         solver = self._GetSolver()
         info = solver.GetComputingModelPart().ProcessInfo
@@ -479,6 +505,14 @@ class AnalysisStage:
             "max_iteration, or check loads and supports; to go on from such a step set "
             'solver_settings.on_non_converged_step: "continue"'
         )
+
+
+def _solver_echo_level(solver: Any) -> int:
+    """``solver_settings.echo_level`` (0 when the solver has no such setting)."""
+    settings = getattr(solver, "settings", None)
+    if settings is None or not settings.Has("echo_level"):
+        return 0
+    return int(settings["echo_level"].GetInt())
 
 
 def _first_line(error: BaseException) -> str:

@@ -1,5 +1,14 @@
 """Console report of an analysis: a per-step table, a progress bar on terminals, a closing summary.
 
+On a terminal, a step that has run for ``LIVE_AFTER`` seconds also gets a live line, rewritten in
+place after every Newton iteration until the step's row replaces it::
+
+  step 3 | Newton 4 | res ratio 1.234e-03 | active 96 slip 0 | linear solve 3.1 s (step 9.8 s) | 9 s
+
+(the criteria's ratios, the active and slipping slave nodes of a contact analysis, the linear
+solver's seconds in the last iteration and in the whole step, the step's wall time). It is not
+written when ``stream`` is not a terminal, so logs stay clean.
+
 ::
 
      step          time  iter  res ratio    res abs   dx ratio     dx abs  converged
@@ -13,9 +22,10 @@
 
 from __future__ import annotations
 
+import shutil
 import sys
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import TextIO
@@ -26,6 +36,8 @@ _HEADER = (
     f"{'dx ratio':>9}  {'dx abs':>9}  converged"
 )
 _CONTACT_HEADER = f"  {'active':>6}  {'slip':>6}  {'pairs':>6}  {'max pen.':>9}"
+#: Seconds a step runs before its live Newton line appears.
+LIVE_AFTER = 2.0
 
 
 @dataclass
@@ -53,6 +65,26 @@ class StepRecord:
     contact: tuple[int, int, int, float] | None = None
 
 
+@dataclass
+class IterationStatus:
+    """What the live line shows after one Newton iteration.
+
+    Attributes:
+        iteration: the Newton iteration just done (1-based, within the step).
+        residual: (ratio, absolute) of the residual criterion, None if not used.
+        increment: (ratio, absolute) of the displacement criterion, None if not used.
+        contact: (active, slipping, pairs, max penetration) of a contact analysis, None otherwise.
+        linear_solve: seconds spent in the linear solver since the step began.
+
+    """
+
+    iteration: int
+    residual: tuple[float, float] | None = None
+    increment: tuple[float, float] | None = None
+    contact: tuple[int, int, int, float] | None = None
+    linear_solve: float = 0.0
+
+
 def _norm(value: float | None) -> str:
     return f"{value:9.3e}" if value is not None else f"{'-':>9}"
 
@@ -63,15 +95,33 @@ class Reporter:
     Args:
         stream: where the table and the summary go (default ``sys.stdout``).
         progress: draw a progress bar; None = only when ``stream`` is a terminal.
+        quiet: print nothing.
+        live: show the live Newton line of long steps; None = only when ``stream`` is a terminal.
+        clock: the seconds clock the live line's delay is measured with (tests pass a fake one).
+        live_after: seconds a step runs before its live line appears.
 
     """
 
     def __init__(
-        self, stream: TextIO | None = None, progress: bool | None = None, *, quiet: bool = False
+        self,
+        stream: TextIO | None = None,
+        progress: bool | None = None,
+        *,
+        quiet: bool = False,
+        live: bool | None = None,
+        clock: Callable[[], float] = time.perf_counter,
+        live_after: float = LIVE_AFTER,
     ):
         self.stream = None if quiet else (stream or sys.stdout)
         isatty = bool(self.stream is not None and getattr(self.stream, "isatty", lambda: False)())
         self._progress_wanted = isatty if progress is None else progress
+        #: Whether long steps get a live Newton line (never when nothing is printed).
+        self.live = self.stream is not None and (isatty if live is None else live)
+        self._clock = clock
+        self._live_after = live_after
+        self._step_label = ""
+        self._step_started: float | None = None
+        self._last_solve = 0.0
         self._progress_on = False
         self._bar_shown = False
         self.phases = dict.fromkeys(PHASES, 0.0)
@@ -130,8 +180,50 @@ class Reporter:
             return
         self._print(_HEADER + (_CONTACT_HEADER if contact_columns else ""))
 
+    def begin_step(self, step: int) -> None:
+        """Start the clock of step ``step`` (its live line appears ``live_after`` s later)."""
+        self._step_label = str(step)
+        self._step_started = self._clock()
+        self._last_solve = 0.0
+
+    def wants_iteration(self) -> bool:
+        """Whether :meth:`iteration` would print now (callers skip gathering the status if not)."""
+        return (
+            self.live
+            and self._step_started is not None
+            and self._clock() - self._step_started >= self._live_after
+        )
+
+    def iteration(self, status: IterationStatus) -> None:
+        """Rewrite the live line of the running step (nothing before ``live_after`` seconds).
+
+        Call it after every iteration (with only ``iteration`` and ``linear_solve`` while
+        :meth:`wants_iteration` is false): the line shows the linear solve of the last iteration.
+        """
+        last = max(status.linear_solve - self._last_solve, 0.0)
+        self._last_solve = status.linear_solve
+        if not self.wants_iteration() or self.stream is None or self._step_started is None:
+            return
+        elapsed = self._clock() - self._step_started
+        parts = [f"step {self._step_label}", f"Newton {status.iteration}"]
+        if status.residual is not None:
+            parts.append(f"res ratio {status.residual[0]:.3e}")
+        if status.increment is not None:
+            parts.append(f"dx ratio {status.increment[0]:.3e}")
+        if status.contact is not None:
+            parts.append(f"active {status.contact[0]} slip {status.contact[1]}")
+        parts.append(f"linear solve {last:.1f} s (step {status.linear_solve:.1f} s)")
+        parts.append(f"{elapsed:.0f} s")
+        line = " | ".join(parts)
+        width = shutil.get_terminal_size((200, 24)).columns - 1
+        self._ClearBar()
+        self.stream.write(line[: max(width, 20)])  # one screen line, so \r can rewrite it
+        self.stream.flush()
+        self._bar_shown = True
+
     def record_step(self, record: StepRecord) -> None:
-        """Store a step and print its row."""
+        """Store a step and print its row (which replaces the step's live line)."""
+        self._step_started = None
         self.steps.append(record)
         residual = record.residual or (None, None)
         increment = record.increment or (None, None)

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <pybind11/eigen.h>
+#include <pybind11/functional.h>
 #include <pybind11/stl.h>
 
 #include "contact_app/bindings/bindings.h"
@@ -141,6 +142,14 @@ void BindStrategies(py::module_& m) {
         .def("Clear", &SolvingStrategy::Clear)
         .def("MoveMesh", &SolvingStrategy::MoveMesh)
         .def("SetEchoLevel", &SolvingStrategy::SetEchoLevel, py::arg("level"))
+        .def(
+            "SetIterationObserver",
+            [](SolvingStrategy& self, std::optional<std::function<void()>> observer) {
+                self.SetIterationObserver(observer ? std::move(*observer) : std::function<void()>());
+            },
+            py::arg("observer"),
+            "Callable without arguments run after every Newton iteration (None removes it); an exception it raises "
+            "ends the step.")
         .def("GetIterationNumber", &SolvingStrategy::GetIterationNumber)
         .def("IsConverged", &SolvingStrategy::LastStepConverged)
         .def(

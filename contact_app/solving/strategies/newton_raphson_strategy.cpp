@@ -66,6 +66,7 @@ bool NewtonRaphsonStrategy::SolveSolutionStep() {
     while (!converged && mIterations < mMaxIterations) {
         ++mIterations;
         converged = Iterate();
+        NotifyIteration();
     }
     mConverged = converged;
     if (mSettings.echo_level >= 1) {

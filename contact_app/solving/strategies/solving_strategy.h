@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -56,6 +57,9 @@ public:
     int GetIterationNumber() const { return mIterations; }
     bool LastStepConverged() const { return mConverged; }
     void SetEchoLevel(int level) { mSettings.echo_level = level; }
+    /// Called after every Newton iteration (its number is GetIterationNumber()), e.g. to show live progress; an
+    /// empty function removes it. An exception thrown by the observer ends the step and propagates.
+    void SetIterationObserver(std::function<void()> observer) { mIterationObserver = std::move(observer); }
     const StrategySettings& Settings() const { return mSettings; }
 
 protected:
@@ -63,6 +67,10 @@ protected:
     void SetUpSystemIfNeeded();
     /// Imposes u_s = T u_m + c on the slaves of the active constraints (Predict).
     void ApplyConstraintValues();
+    /// Calls the iteration observer, if any.
+    void NotifyIteration() {
+        if (mIterationObserver) mIterationObserver();
+    }
 
     ModelPart& mModelPart;
     Scheme::Pointer mScheme;
@@ -75,6 +83,7 @@ protected:
     bool mSolutionStepInitialized = false;
     int mIterations = 0;
     bool mConverged = false;
+    std::function<void()> mIterationObserver;
 };
 
 }  // namespace contact_app

@@ -3,8 +3,15 @@
 from __future__ import annotations
 
 import io
+import json
+from pathlib import Path
 
-from contact_app.analysis import Reporter, StepRecord
+import pytest
+from analysis_cases import load
+
+import contact_app as ca
+from contact_app.analysis import IterationStatus, Reporter, StepRecord, StructuralMechanicsAnalysis
+from contact_app.parameters import Parameters
 
 
 class _Terminal(io.StringIO):
@@ -80,3 +87,83 @@ def test_quiet_prints_nothing_but_keeps_the_records() -> None:
     reporter.finish()
     assert reporter.non_converged_steps() == [2]
     assert reporter.summary().startswith("summary: 1 steps, 10 Newton iterations")
+
+
+class _Clock:
+    """A clock the test moves by hand (no timing in the tests)."""
+
+    def __init__(self) -> None:
+        self.now = 100.0
+
+    def __call__(self) -> float:
+        return self.now
+
+
+def test_live_line_appears_only_after_the_delay_and_is_rewritten_in_place() -> None:
+    stream, clock = _Terminal(), _Clock()
+    reporter = Reporter(stream, progress=False, clock=clock, live_after=2.0)
+    reporter.begin_loop(0.0, 1.0, 2, contact_columns=True)
+    reporter.begin_step(7)
+    clock.now += 1.0
+    assert not reporter.wants_iteration()
+    reporter.iteration(IterationStatus(1, (0.5, 1.0), None, (3, 1, 4, 0.0), 0.4))
+    assert "Newton" not in stream.getvalue()  # a short step stays silent
+    clock.now += 1.5
+    reporter.iteration(IterationStatus(2, (2e-3, 1.0), (4e-4, 1e-6), (12, 2, 8, 0.0), 1.5))
+    clock.now += 3.0
+    reporter.iteration(IterationStatus(3, (1e-6, 1.0), None, (12, 0, 8, 0.0), 2.0))
+    text = stream.getvalue()
+    lines = text.split("\r\x1b[K")
+    assert lines[-2].endswith(
+        "step 7 | Newton 2 | res ratio 2.000e-03 | dx ratio 4.000e-04 | active 12 slip 2 | "
+        "linear solve 1.1 s (step 1.5 s) | 2 s"
+    )
+    assert lines[-1] == (
+        "step 7 | Newton 3 | res ratio 1.000e-06 | active 12 slip 0 | "
+        "linear solve 0.5 s (step 2.0 s) | 6 s"
+    )
+    assert "\n" not in text.partition("\n")[2]  # only the header ends a line so far
+    reporter.record_step(StepRecord(7, 0.5, 3, (1e-6, 1.0), None, True, (12, 0, 8, 0.0)))
+    cleared, _, row = stream.getvalue().rpartition("\r\x1b[K")
+    assert cleared.endswith("| 6 s") and row.split()[:3] == ["7", "5.000000e-01", "3"]
+    assert not reporter.wants_iteration()  # the row replaced the line; the next step starts over
+
+
+def test_no_live_line_when_not_a_terminal_unless_forced() -> None:
+    clock = _Clock()
+    for stream, live, shown in (
+        (io.StringIO(), None, False),
+        (_Terminal(), False, False),
+        (io.StringIO(), True, True),
+    ):
+        reporter = Reporter(stream, clock=clock, live=live, live_after=0.0)
+        reporter.begin_step(1)
+        reporter.iteration(IterationStatus(1, None, None, None, 0.0))
+        assert ("Newton 1" in stream.getvalue()) is shown
+    quiet = Reporter(quiet=True, live=True, live_after=0.0)
+    quiet.begin_step(1)
+    assert not quiet.wants_iteration()
+
+
+def test_a_run_shows_one_live_line_per_newton_iteration(
+    case_dir: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(case_dir)
+    parameters = load(case_dir / "plate_static_parameters.json")
+    del parameters["output_processes"]
+    stream = io.StringIO()  # not a terminal: the line is forced on
+    reporter = Reporter(stream, live=True, live_after=0.0)
+    analysis = StructuralMechanicsAnalysis(
+        ca.Model(), Parameters(json.dumps(parameters)), reporter=reporter
+    )
+    analysis.Run()
+    text = stream.getvalue()
+    iterations = sum(record.iterations for record in reporter.steps)
+    assert text.count("| Newton ") == iterations >= 2
+    assert "step 1 | Newton 1 | res ratio " in text and "step 2 | Newton 1 | " in text
+    quiet = io.StringIO()
+    parameters["problem_data"]["echo_level"] = 0
+    StructuralMechanicsAnalysis(
+        ca.Model(), Parameters(json.dumps(parameters)), reporter=Reporter(quiet, live_after=0.0)
+    ).Run()
+    assert "| Newton" not in quiet.getvalue() and "\r" not in quiet.getvalue()
