@@ -6,15 +6,22 @@ DoFs, Newton iterations per step, total wall time and its split into contact sea
 (structural + contact, from the builder), of which contact assembly (the pair conditions' local
 systems, timed separately once per build and multiplied by the number of builds), linear solve,
 output, and the peak resident memory; then the share of search + contact assembly in the total.
+A second table (issue 18) gives, per run, the linear solver and the fill-reducing ordering it used,
+the share of the linear solve in the total, the largest factors (nnz of L + U and UMFPACK's peak
+factor memory), the peak resident memory and the errors of the contact size (a, or b in 2D) and of
+p0 against Hertz theory.
 
-Usage: ``python benchmarks/hertz_baseline.py [--example E] [--steps N] [levels ...]`` with E =
-hertz_2d (default) or hertz_3d, levels 1 2 3 by default, ``--steps N``: the full load in N equal
-steps instead of the example's own time_step. For hertz_3d a fractional level is an intermediate
-mesh (``make_mesh.subdivision_factor``): ``--example hertz_3d 3.8`` has 2.8e5 displacement DoFs.
+Usage: ``python benchmarks/hertz_baseline.py [--example E] [--steps N] [--ordering O[,O...]]
+[levels ...]`` with E = hertz_2d (default) or hertz_3d, levels 1 2 3 by default, ``--steps N``:
+the full load in N equal steps instead of the example's own time_step, ``--ordering amd,metis``:
+run every level once per UMFPACK ordering (linear_solver_settings.ordering; default: the example's
+own setting, "auto"). For hertz_3d a fractional level is an intermediate mesh
+(``make_mesh.subdivision_factor``): ``--example hertz_3d 3.8`` has 2.8e5 displacement DoFs.
 """
 
 from __future__ import annotations
 
+import importlib
 import json
 import os
 import resource
@@ -28,11 +35,15 @@ EXAMPLES = {"hertz_2d": 2, "hertz_3d": 3}  # example folder -> displacement DoFs
 OUT = ROOT / "build" / "benchmarks"
 
 
-def _measure(example: str, level: float, steps: int | None = None) -> dict:
+def _measure(
+    example: str, level: float, steps: int | None = None, ordering: str | None = None
+) -> dict:
     """Run one level of ``example`` in this process and return its figures."""
     folder = ROOT / "examples" / example
-    sys.path.insert(0, str(folder))
+    sys.path[:0] = [str(folder), str(folder.parent)]
     import make_mesh  # the example's mesh script
+
+    runner = importlib.import_module(f"run_{example}")  # its evaluation of a and p0
 
     import contact_app as ca
     from contact_app.contact.search_base_process import SearchBaseProcess
@@ -50,11 +61,13 @@ def _measure(example: str, level: float, steps: int | None = None) -> dict:
     workdir.mkdir(parents=True, exist_ok=True)
     for name in ("ProjectParameters.json", "materials.json"):
         (workdir / name).write_text((folder / name).read_text())
+    parameters = json.loads((workdir / "ProjectParameters.json").read_text())
     if steps is not None:  # fewer steps: fewer factorisations on the largest meshes
-        parameters = json.loads((workdir / "ProjectParameters.json").read_text())
         span = parameters["problem_data"]["end_time"] - parameters["problem_data"]["start_time"]
         parameters["solver_settings"]["time_stepping"]["time_step"] = span / steps
-        (workdir / "ProjectParameters.json").write_text(json.dumps(parameters, indent=1))
+    if ordering is not None:
+        parameters["solver_settings"]["linear_solver_settings"]["ordering"] = ordering
+    (workdir / "ProjectParameters.json").write_text(json.dumps(parameters, indent=1))
     make_mesh.write_mesh(workdir / f"{example}.msh", level)
     os.chdir(workdir)
     start = time.perf_counter()
@@ -70,6 +83,9 @@ def _measure(example: str, level: float, steps: int | None = None) -> dict:
         pair.CalculateLocalSystem(info)
     contact_assembly = (time.perf_counter() - start) * builds
     dofs = EXAMPLES[example] * main.NumberOfNodes()  # displacement DoFs (multipliers on top)
+    analysis.system_sizes = []  # what the example's evaluate reads of its recording analysis
+    hertz = runner.evaluate(analysis, workdir / "materials.json")
+    solver = analysis.reporter.linear_solver or {}
     figures = {
         "example": example,
         "level": level,
@@ -85,6 +101,13 @@ def _measure(example: str, level: float, steps: int | None = None) -> dict:
         "linear_solve_s": reporter.linear_solve,
         "output_s": reporter.phases["output"],
         "peak_rss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0,
+        "linear_solver": solver.get("solver", ""),
+        "ordering": solver.get("ordering", ""),
+        "factorizations": solver.get("factorizations", 0),
+        "max_factor_nonzeros": solver.get("max_factor_nonzeros", 0.0),
+        "max_factor_memory_mb": solver.get("max_factor_memory", 0.0) / 2.0**20,
+        "size_error": getattr(hertz, "a_error", getattr(hertz, "b_error", float("nan"))),
+        "p0_error": hertz.p0_error,
     }
     figures["search_and_contact_share"] = (figures["search_s"] + contact_assembly) / total
     return figures
@@ -93,9 +116,8 @@ def _measure(example: str, level: float, steps: int | None = None) -> dict:
 def main(argv: list[str]) -> int:
     """Run the levels in child processes (or, with ``--worker EXAMPLE LEVEL``, measure one)."""
     if argv and argv[0] == "--worker":
-        level = float(argv[2]) if "." in argv[2] else int(argv[2])
-        steps = int(argv[3]) if len(argv) > 3 else None
-        print(json.dumps(_measure(argv[1], level, steps)))
+        job = json.loads(argv[1])
+        print(json.dumps(_measure(job["example"], job["level"], job["steps"], job["ordering"])))
         return 0
     example = "hertz_2d"
     if argv and argv[0] == "--example":
@@ -103,23 +125,28 @@ def main(argv: list[str]) -> int:
             print(f"--example expects one of {sorted(EXAMPLES)}", file=sys.stderr)
             return 2
         example, argv = argv[1], argv[2:]
-    steps: list[str] = []
+    steps: int | None = None
     if argv and argv[0] == "--steps":
-        steps, argv = argv[1:2], argv[2:]
+        steps, argv = int(argv[1]), argv[2:]
+    orderings: list[str | None] = [None]
+    if argv and argv[0] == "--ordering":
+        orderings, argv = list(argv[1].split(",")), argv[2:]
     levels = [float(a) if "." in a else int(a) for a in argv] or [1, 2, 3]
     OUT.mkdir(parents=True, exist_ok=True)
     rows = []
     for level in levels:
-        done = subprocess.run(
-            [sys.executable, __file__, "--worker", example, str(level), *steps],
-            capture_output=True,
-            text=True,
-            check=False,
-        )
-        if done.returncode != 0:
-            print(f"level {level} failed:\n{done.stderr[-2000:]}", file=sys.stderr)
-            return 1
-        rows.append(json.loads(done.stdout.strip().splitlines()[-1]))
+        for ordering in orderings:
+            job = {"example": example, "level": level, "steps": steps, "ordering": ordering}
+            done = subprocess.run(
+                [sys.executable, __file__, "--worker", json.dumps(job)],
+                capture_output=True,
+                text=True,
+                check=False,
+            )
+            if done.returncode != 0:
+                print(f"{job} failed:\n{done.stderr[-2000:]}", file=sys.stderr)
+                return 1
+            rows.append(json.loads(done.stdout.strip().splitlines()[-1]))
     header = (
         f"{example}\n{'level':>5} {'DoFs':>7} {'pairs':>5} {'newton/step':>14} {'total s':>8} "
         f"{'search':>7} {'assembly':>8} {'(contact)':>9} {'solve':>7} {'output':>7} "
@@ -133,6 +160,20 @@ def main(argv: list[str]) -> int:
             f"{r['total_s']:8.2f} {r['search_s']:7.2f} {r['assembly_s']:8.2f} "
             f"{r['contact_assembly_s']:9.3f} {r['linear_solve_s']:7.2f} {r['output_s']:7.2f} "
             f"{r['peak_rss_mb']:8.0f} {100 * r['search_and_contact_share']:13.1f}%"
+        )
+    size = "a" if example == "hertz_3d" else "b"
+    print(
+        f"\n{'level':>5} {'DoFs':>7} {'solver':>8} {'ordering':>8} {'total s':>8} {'solve s':>8} "
+        f"{'share':>6} {'factors nnz':>11} {'factor MB':>9} {'peak MB':>8} "
+        f"{size + ' error':>9} {'p0 error':>9}"
+    )
+    for r in rows:
+        print(
+            f"{r['level']:>5} {r['dofs_displacement']:>7} {r['linear_solver']:>8} "
+            f"{r['ordering']:>8} {r['total_s']:8.2f} {r['linear_solve_s']:8.2f} "
+            f"{100 * r['linear_solve_s'] / r['total_s']:5.1f}% {r['max_factor_nonzeros']:11.4g} "
+            f"{r['max_factor_memory_mb']:9.0f} {r['peak_rss_mb']:8.0f} "
+            f"{100 * r['size_error']:8.4f}% {100 * r['p0_error']:8.4f}%"
         )
     path = OUT / f"{example}_baseline.json"
     path.write_text(json.dumps(rows, indent=1) + "\n")

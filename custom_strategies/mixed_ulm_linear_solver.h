@@ -31,6 +31,12 @@ public:
     void Clear() override;
     std::string Info() const override;
     std::size_t NumberOfSymbolicAnalyses() const override { return mInner->NumberOfSymbolicAnalyses(); }
+    /// The inner solver's figures, under this solver's name.
+    LinearSolverStatistics Statistics() const override {
+        LinearSolverStatistics statistics = mInner->Statistics();
+        statistics.solver = Info();
+        return statistics;
+    }
     bool AdditionalPhysicalDataIsNeeded() const override { return true; }
     void ProvideAdditionalData(const std::vector<Dof*>& rDofSet, ModelPart& rModelPart) override;
 

@@ -135,6 +135,7 @@ class AnalysisStage:
             contact_columns=hasattr(self._GetSolver(), "ContactStatus"),
         )
         self.reporter.non_convergence_policy = self._NonConvergencePolicyNote()
+        self.reporter.echo_linear_solver = self.echo_level >= 1
         while self.KeepAdvancingSolutionLoop():
             with self.reporter.phase("solve"):
                 previous = self.time
@@ -149,6 +150,8 @@ class AnalysisStage:
                     converged = self._SolveWithSubsteps(*cutting)
                 self.reporter.add_builder_timings(builder.GetTimings())
                 self.reporter.record_step(self._StepRecord(converged))
+                if hasattr(solver, "GetLinearSolver"):
+                    self.reporter.add_linear_solver(solver.GetLinearSolver().GetStatistics())
                 if not converged and (self._gave_up or not self._GoesOnAfterNonConvergence()):
                     self._StopOnNonConvergence()
                 if not converged:

@@ -17,6 +17,8 @@ written when ``stream`` is not a terminal, so logs stay clean.
     summary: 10 steps, 20 Newton iterations, all converged
       wall time: import 0.004 s, initialize 0.010 s, solve 0.120 s (assembly 0.070 s,
                  linear solve 0.030 s), output 0.020 s, total 0.160 s
+      linear solver: umfpack, ordering amd ("auto"), 20 factorisations, largest factors
+                     1.234e+04 nnz in 0.9 MB
       files written (11): VTK_Output/Structure_0_1.vtk, ...
 """
 
@@ -89,6 +91,33 @@ def _norm(value: float | None) -> str:
     return f"{value:9.3e}" if value is not None else f"{'-':>9}"
 
 
+def linear_solver_text(statistics: dict, *, largest: bool = True) -> str:
+    """One line on the linear solver (``LinearSolver.GetStatistics()``).
+
+    Args:
+        statistics: the solver's figures (solver, ordering, ordering_setting, factorizations,
+            factor_nonzeros and factor_memory of the last factorisation and their maxima).
+        largest: report the largest factors of the run (the summary) rather than the last ones
+            (the step log).
+
+    """
+    text = f"linear solver: {statistics['solver']}"
+    if statistics.get("ordering"):
+        text += f", ordering {statistics['ordering']}"
+        if statistics.get("ordering_setting"):
+            text += f' ("{statistics["ordering_setting"]}")'
+    count = int(statistics.get("factorizations", 0))
+    if count:
+        text += f", {count} factorisation{'s' if count != 1 else ''}"
+    key = "max_factor" if largest else "factor"
+    nonzeros = float(statistics.get(f"{key}_nonzeros", 0.0))
+    if nonzeros > 0.0:
+        memory = float(statistics.get(f"{key}_memory", 0.0)) / 2.0**20
+        which = "largest" if largest else "last"
+        text += f", {which} factors {nonzeros:.4g} nnz in {memory:.1f} MB"
+    return text
+
+
 class Reporter:
     """Collect timings and step records; print them to ``stream`` (None = silent).
 
@@ -139,6 +168,10 @@ class Reporter:
         self.sub_steps = 0
         #: What happens to a step that does not converge, and why (set by the analysis stage).
         self.non_convergence_policy = ""
+        #: The linear solver's latest figures (``LinearSolver.GetStatistics()``), None = unknown.
+        self.linear_solver: dict | None = None
+        #: Print the linear solver's line under every step row (echo_level >= 1).
+        self.echo_linear_solver = False
 
     def _print(self, text: str = "") -> None:
         if self.stream is not None:
@@ -159,6 +192,19 @@ class Reporter:
         """Add a builder's assembly (setup + build) and linear-solve seconds."""
         self.assembly += float(timings.get("build", 0.0)) + float(timings.get("setup", 0.0))
         self.linear_solve += float(timings.get("solve", 0.0))
+
+    def add_linear_solver(self, statistics: dict) -> None:
+        """Keep the linear solver's figures after a step; print them when echo_linear_solver."""
+        previous = self.linear_solver
+        self.linear_solver = dict(statistics)
+        if not self.echo_linear_solver:
+            return
+        count = int(statistics.get("factorizations", 0))
+        step_count = count - (int(previous.get("factorizations", 0)) if previous else 0)
+        line = linear_solver_text(statistics, largest=False)
+        if count:
+            line += f" ({step_count} in this step)"
+        self._print(f"{'':8}{line}")
 
     def begin_loop(
         self,
@@ -278,6 +324,8 @@ class Reporter:
             f"(assembly {self.assembly:.3f} s, linear solve {self.linear_solve:.3f} s), "
             f"output {phases['output']:.3f} s, total {total:.3f} s",
         ]
+        if self.linear_solver is not None:
+            lines.append("  " + linear_solver_text(self.linear_solver))
         if self.cut_steps:
             lines.append(
                 f"  step cutting: {self.cut_steps} step(s) redone in {self.sub_steps} sub-steps"

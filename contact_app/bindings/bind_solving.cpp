@@ -23,14 +23,39 @@ void BindLinearSolvers(py::module_& m) {
         .def("Info", &LinearSolver::Info, "The solver's own name (umfpack, cholmod, klu, sparse_lu, cg, bicgstab).")
         .def("Clear", &LinearSolver::Clear, "Forgets the cached factorisation.")
         .def("NumberOfSymbolicAnalyses", &LinearSolver::NumberOfSymbolicAnalyses,
-             "How often the sparsity pattern was analysed (pattern reuse diagnostic).");
+             "How often the sparsity pattern was analysed (pattern reuse diagnostic).")
+        .def(
+            "GetStatistics",
+            [](const LinearSolver& self) {
+                const LinearSolverStatistics s = self.Statistics();
+                py::dict statistics;
+                statistics["solver"] = s.solver;
+                statistics["ordering"] = s.ordering;
+                statistics["ordering_setting"] = s.ordering_setting;
+                statistics["factorizations"] = s.factorizations;
+                statistics["system_size"] = s.system_size;
+                statistics["factor_nonzeros"] = s.factor_nonzeros;
+                statistics["max_factor_nonzeros"] = s.max_factor_nonzeros;
+                statistics["factor_memory"] = s.factor_memory;
+                statistics["max_factor_memory"] = s.max_factor_memory;
+                statistics["factor_flops"] = s.factor_flops;
+                statistics["symbolic_seconds"] = s.symbolic_seconds;
+                statistics["numeric_seconds"] = s.numeric_seconds;
+                statistics["symbolic_analyses"] = self.NumberOfSymbolicAnalyses();
+                return statistics;
+            },
+            "solver, ordering (used) and ordering_setting (asked for), factorizations, system_size, "
+            "factor_nonzeros (nnz L + U) and factor_memory (bytes) of the last factorisation, and their maxima; factor_flops, symbolic_seconds and "
+            "numeric_seconds (CPU) summed over the run, symbolic_analyses.");
     m.def(
         "CreateLinearSolver",
-        [](const std::string& solver_type, double tolerance, int max_iteration) {
-            return CreateLinearSolver({solver_type, tolerance, max_iteration});
+        [](const std::string& solver_type, double tolerance, int max_iteration, const std::string& ordering) {
+            return CreateLinearSolver({solver_type, tolerance, max_iteration, ordering});
         },
         py::arg("solver_type") = "", py::arg("tolerance") = 1.0e-6, py::arg("max_iteration") = 1000,
-        "Linear solver for a Kratos or contact_app solver_type name ('' = umfpack).");
+        py::arg("ordering") = "auto",
+        "Linear solver for a Kratos or contact_app solver_type name ('' = umfpack); ordering (UMFPACK): "
+        "'auto', 'amd' or 'metis'.");
     m.def("registered_linear_solvers", &RegisteredLinearSolverNames, "Every accepted linear solver_type, sorted.");
     m.def("ResolveLinearSolverName", &ResolveLinearSolverName, py::arg("solver_type"),
           "The solver a solver_type name maps to.");

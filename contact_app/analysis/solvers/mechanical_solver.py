@@ -31,12 +31,14 @@ from .convergence_criteria_factory import (
 logger = logging.getLogger("contact_app.analysis")
 
 #: Every key a ``linear_solver_settings`` block may hold (Kratos linear solver factories). Only
-#: ``solver_type``, ``tolerance`` and ``max_iteration`` change what contact_app does; the others
+#: ``solver_type``, ``tolerance``, ``max_iteration`` and ``ordering`` (contact_app's own: UMFPACK's
+#: fill-reducing ordering, "auto", "amd" or "metis") change what contact_app does; the others
 #: tune Kratos' iterative solvers and are accepted and ignored.
 LINEAR_SOLVER_KEYS: dict[str, Any] = {
     "solver_type": "",
     "tolerance": 1.0e-6,
     "max_iteration": 1000,
+    "ordering": "auto",
     "scaling": False,
     "verbosity": 0,
     "echo_level": 0,
@@ -360,6 +362,15 @@ class MechanicalSolver:
                 ) from None
         if linear.Has("tolerance"):
             positive(linear, "tolerance")
+        if linear.Has("ordering"):
+            solver_type = linear["solver_type"].GetString() if linear.Has("solver_type") else ""
+            try:
+                ca.CreateLinearSolver(solver_type, ordering=linear["ordering"].GetString())
+            except ca.InputError as failure:
+                first, _, rest = str(failure).partition("\n")
+                raise ca.InputError(
+                    f"{first}\n  where:    {linear.Where('ordering')}\n{rest}"
+                ) from None
 
     def _ValidateTimeStepping(self) -> None:
         stepping = self.settings["time_stepping"]
@@ -716,7 +727,8 @@ class MechanicalSolver:
         solver_type = linear["solver_type"].GetString() if linear.Has("solver_type") else ""
         tolerance = linear["tolerance"].GetDouble() if linear.Has("tolerance") else 1.0e-6
         max_iteration = linear["max_iteration"].GetInt() if linear.Has("max_iteration") else 1000
-        return ca.CreateLinearSolver(solver_type, tolerance, max_iteration)
+        ordering = linear["ordering"].GetString() if linear.Has("ordering") else "auto"
+        return ca.CreateLinearSolver(solver_type, tolerance, max_iteration, ordering)
 
     def _CreateBuilderAndSolver(self) -> Any:
         kind = self.settings["builder_and_solver_settings"]["type"].GetString()
@@ -786,6 +798,10 @@ class MechanicalSolver:
     def GetBuilderAndSolver(self) -> Any:
         """The builder and solver (for timings)."""
         return self._GetBuilderAndSolver()
+
+    def GetLinearSolver(self) -> Any:
+        """The linear solver (for its statistics: name, ordering, fill, factor memory)."""
+        return self._GetLinearSolver()
 
     def GetSolutionStrategy(self) -> Any:
         """The strategy (created on first use)."""

@@ -12,6 +12,23 @@ namespace contact_app {
 class Dof;
 class ModelPart;
 
+/// What a solver reports about its work so far (the run summary and the step log print it).
+/// Figures a solver does not know stay 0 / empty.
+struct LinearSolverStatistics {
+    std::string solver;           ///< Info() of the solver that ran
+    std::string ordering;         ///< fill-reducing ordering of the last factorisation ("metis", "amd", ...)
+    std::string ordering_setting; ///< what was asked for ("auto", "amd", "metis"); empty = no such setting
+    std::size_t factorizations = 0;  ///< numeric factorisations (one per Solve of a direct solver)
+    std::size_t system_size = 0;     ///< rows of the last system
+    double factor_nonzeros = 0.0;    ///< nnz(L) + nnz(U) of the last factorisation
+    double max_factor_nonzeros = 0.0;
+    double factor_memory = 0.0;      ///< bytes: peak memory of the last symbolic + numeric factorisation
+    double max_factor_memory = 0.0;
+    double factor_flops = 0.0;       ///< floating-point operations of all numeric factorisations
+    double symbolic_seconds = 0.0;   ///< CPU time of all symbolic analyses (ordering included)
+    double numeric_seconds = 0.0;    ///< CPU time of all numeric factorisations
+};
+
 /// Solves A x = b for the global system (Kratos LinearSolver). Direct solvers keep their
 /// symbolic factorisation while the sparsity pattern of A is unchanged.
 class LinearSolver {
@@ -29,6 +46,12 @@ public:
     virtual std::string Info() const = 0;
     /// Number of symbolic analyses performed so far (a pattern-reuse diagnostic).
     virtual std::size_t NumberOfSymbolicAnalyses() const { return 0; }
+    /// The solver's figures so far (name, ordering, fill, memory).
+    virtual LinearSolverStatistics Statistics() const {
+        LinearSolverStatistics statistics;
+        statistics.solver = Info();
+        return statistics;
+    }
     /// True when Solve needs to know which DoF each equation is (condensing solvers).
     virtual bool AdditionalPhysicalDataIsNeeded() const { return false; }
     /// The DoF set (equation id = position in the system) and the model part of the next Solve.

@@ -72,7 +72,13 @@ std::string ResolveLinearSolverName(const std::string& solver_type) {
 
 LinearSolver::Pointer CreateLinearSolver(const LinearSolverSettings& settings) {
     const std::string resolved = ResolveLinearSolverName(settings.solver_type);
-    if (resolved == "umfpack") return std::make_shared<DirectSolver>(DirectSolverKind::UmfPack);
+    const FillReducingOrdering ordering = ParseFillReducingOrdering(settings.ordering);
+    CONTACT_CHECK(resolved == "umfpack" || ordering == FillReducingOrdering::Auto, InputError,
+                  "linear_solver_settings.ordering \"", settings.ordering, "\" applies to UMFPACK only, and solver_type \"",
+                  settings.solver_type, "\" runs ", resolved,
+                  "\n  fix: remove \"ordering\", or use a solver_type that maps to umfpack (\"umfpack\", "
+                  "\"skyline_lu_factorization\", \"super_lu\", \"pardiso_lu\", ...)");
+    if (resolved == "umfpack") return std::make_shared<DirectSolver>(DirectSolverKind::UmfPack, ordering);
     if (resolved == "cholmod") return std::make_shared<DirectSolver>(DirectSolverKind::Cholmod);
     if (resolved == "klu") return std::make_shared<DirectSolver>(DirectSolverKind::Klu);
     if (resolved == "sparse_lu") return std::make_shared<DirectSolver>(DirectSolverKind::SparseLU);

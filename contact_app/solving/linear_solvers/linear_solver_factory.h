@@ -15,12 +15,16 @@ struct LinearSolverSettings {
     std::string solver_type;
     double tolerance = 1.0e-6;  ///< iterative solvers only
     int max_iteration = 1000;   ///< iterative solvers only
+    /// Fill-reducing ordering of UMFPACK: "auto" (METIS for large systems, AMD for small ones), "amd"
+    /// or "metis". Another solver accepts only "auto".
+    std::string ordering = "auto";
 };
 
 /// Creates the solver a name maps to. Every Kratos direct name maps to UMFPACK (all of them are
 /// LU factorisations that agree to round-off); "cholmod" to CHOLMOD, "klu" to KLU, "sparse_lu"
 /// to Eigen's SparseLU; the iterative names to CG or BiCGSTAB(ILUT).
-/// @throws InputError for an unknown name, listing the accepted names with a suggestion.
+/// @throws InputError for an unknown name, listing the accepted names with a suggestion, and for an
+/// unknown ordering or an ordering given to a solver other than UMFPACK (naming linear_solver_settings.ordering).
 LinearSolver::Pointer CreateLinearSolver(const LinearSolverSettings& settings);
 
 /// Every accepted solver_type, sorted.

@@ -96,6 +96,57 @@ TEST(LinearSolvers, SymbolicAnalysisIsReusedWhileThePatternIsUnchanged) {
     EXPECT_EQ(solver.NumberOfSymbolicAnalyses(), 2u);
 }
 
+TEST(LinearSolvers, UmfpackOrderingIsASettingAndTheStatisticsReportIt) {
+    const SparseMatrixType saddle = SaddlePoint(60);
+    const SystemVectorType expected = SystemVectorType::LinSpaced(saddle.rows(), 1.0, 2.0);
+    for (const auto ordering : {FillReducingOrdering::Amd, FillReducingOrdering::Metis}) {
+        DirectSolver solver(DirectSolverKind::UmfPack, ordering);
+        SparseMatrixType matrix = saddle;
+        SystemVectorType b = matrix * expected, x;
+        solver.Solve(matrix, x, b);
+        solver.Solve(matrix, x, b);  // refactorised on the kept analysis
+        EXPECT_LT((x - expected).norm() / expected.norm(), 1e-12);
+        const LinearSolverStatistics statistics = solver.Statistics();
+        EXPECT_EQ(statistics.solver, "umfpack");
+        EXPECT_EQ(statistics.ordering, ordering == FillReducingOrdering::Amd ? "amd" : "metis");
+        EXPECT_EQ(statistics.ordering_setting, statistics.ordering);
+        EXPECT_EQ(statistics.factorizations, 2u);
+        EXPECT_EQ(statistics.system_size, 61u);
+        EXPECT_GE(statistics.factor_nonzeros, static_cast<double>(matrix.nonZeros()));
+        EXPECT_GT(statistics.factor_memory, 0.0);
+        EXPECT_EQ(statistics.max_factor_memory, statistics.factor_memory);
+        EXPECT_GT(statistics.factor_flops, 0.0);
+    }
+}
+
+TEST(LinearSolvers, AutoOrderingIsAmdForSmallAndMetisForLargeSystems) {
+    for (const int n : {100, static_cast<int>(kAutoMetisMinimumSize)}) {
+        DirectSolver solver(DirectSolverKind::UmfPack);
+        SparseMatrixType matrix = Laplacian(n);
+        SystemVectorType b = SystemVectorType::Ones(n), x;
+        solver.Solve(matrix, x, b);
+        EXPECT_EQ(solver.Statistics().ordering, n < 1000 ? "amd" : "metis");
+        EXPECT_EQ(solver.Statistics().ordering_setting, "auto");
+    }
+}
+
+TEST(LinearSolverFactory, OrderingIsValidatedWithTheKeyNamed) {
+    LinearSolverSettings settings;
+    settings.ordering = "nested_dissection";
+    try {
+        CreateLinearSolver(settings);
+        FAIL();
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("unknown linear_solver_settings.ordering \"nested_dissection\""),
+                  std::string::npos);
+    }
+    settings.solver_type = "klu";
+    settings.ordering = "metis";
+    EXPECT_THROW(CreateLinearSolver(settings), InputError);
+    settings.solver_type = "super_lu";
+    EXPECT_EQ(CreateLinearSolver(settings)->Statistics().ordering_setting, "metis");
+}
+
 TEST(LinearSolverFactory, KratosNamesMapAndUnknownNamesSuggest) {
     EXPECT_EQ(ResolveLinearSolverName("skyline_lu_factorization"), "umfpack");
     EXPECT_EQ(ResolveLinearSolverName("SkylineLUFactorizationSolver"), "umfpack");
