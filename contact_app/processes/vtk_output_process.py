@@ -266,6 +266,86 @@ class VtkOutputProcess(OutputProcess):
         return self.prefix + part.FullName().replace(".", "_")
 
     def _write(self, part: Any, path: Path) -> None:
+        if self.extrapolated:  # extrapolation works entity by entity
+            points, blocks, point_data, cell_data = self._gather_per_entity(part)
+        else:
+            points, blocks, point_data, cell_data = self._gather_bulk(part)
+        if not self.binary:
+            points = _round_significant(points, self.precision)
+            point_data = {k: _round_significant(v, self.precision) for k, v in point_data.items()}
+            cell_data = {
+                k: [_round_significant(v, self.precision) for v in blocks_data]
+                for k, blocks_data in cell_data.items()
+            }
+        mesh = meshio.Mesh(points, blocks, point_data=point_data, cell_data=cell_data)
+        with contextlib.redirect_stderr(io.StringIO()):  # meshio warns about ascii on stderr
+            meshio.write(path, mesh, file_format="vtu", binary=self.binary)
+
+    def _gather_bulk(self, part: Any) -> tuple[Any, ...]:
+        """Points, cell blocks, point and cell data from whole-part arrays of ``_core``.
+
+        The same arrays, in the same order, as :meth:`_gather_per_entity`: the part's nodes, then
+        the other nodes of its cells in the order they first appear; cells grouped by type in the
+        order the types first appear.
+        """
+        kind = self._kind(part)
+        elements = kind == "element"
+        root = part.GetRootModelPart()
+        ids = _core.BulkNodeIds(part)
+        entity_ids, codes, names, connectivity, offsets = _core.BulkEntities(part, elements)
+        extra = connectivity[~np.isin(connectivity, ids)]
+        if extra.size:
+            unique, first = np.unique(extra, return_index=True)
+            ids = np.concatenate([ids, unique[np.argsort(first)]])
+        order = np.argsort(ids, kind="stable")
+        positions = order[np.searchsorted(ids[order], connectivity)]
+        points = _core.BulkNodalCoordinates(root, ids, not self.deformed)
+        blocks: list[tuple[str, np.ndarray]] = []
+        members: list[np.ndarray] = []
+        types = [
+            _cell_type(name, part, entity_ids[np.argmax(codes == c)])
+            for c, name in enumerate(names)
+        ]
+        block_of_type = {t: i for i, t in enumerate(dict.fromkeys(types))}
+        block_of_code = np.array([block_of_type[t] for t in types], dtype=np.int64)
+        entity_block = block_of_code[codes] if codes.size else codes
+        for cell_type, block in block_of_type.items():
+            chosen = np.flatnonzero(entity_block == block)
+            width = int(offsets[chosen[0] + 1] - offsets[chosen[0]])
+            nodes = positions[offsets[chosen][:, None] + np.arange(width)]
+            blocks.append((cell_type, nodes.astype(np.int64)))
+            members.append(chosen)
+        if not blocks:  # nodes only: vertex cells, so the file is valid and visible
+            blocks = [("vertex", np.arange(len(ids)).reshape(-1, 1))]
+            kind = "node"
+        point_data: dict[str, np.ndarray] = {}
+        for variable in self.nodal_historical:
+            point_data[variable.Name()] = _rows(*_core.BulkNodalValues(root, ids, variable, True))
+        for variable in self.nodal_values:
+            point_data[variable.Name()] = _rows(*_core.BulkNodalValues(root, ids, variable, False))
+        for name, flag in self.nodal_flags:
+            point_data[name] = _core.BulkNodalFlags(root, ids, flag)
+        if self.write_ids:
+            point_data["KRATOS_NODE_ID"] = ids.astype(np.int64)
+        cell_data: dict[str, list[np.ndarray]] = {}
+        if kind != "node":
+            for variable in self.cell_values[kind]:
+                values, sizes = _core.BulkEntityValues(part, elements, variable)
+                cell_data[variable.Name()] = _rows_per_block(values, sizes, members)
+            for name, flag in self.cell_flags[kind]:
+                flags = _core.BulkEntityFlags(part, elements, flag)
+                cell_data[name] = [flags[chosen] for chosen in members]
+            for variable in self.in_cells:
+                means, sizes = _integration_point_means(
+                    *_core.BulkIntegrationPointValues(part, elements, variable, part.ProcessInfo)
+                )
+                cell_data[variable.Name()] = _rows_per_block(means, sizes, members)
+            if self.write_ids:
+                cell_data[f"KRATOS_{kind.upper()}_ID"] = [entity_ids[c] for c in members]
+        return points, blocks, point_data, cell_data
+
+    def _gather_per_entity(self, part: Any) -> tuple[Any, ...]:
+        """Points, cell blocks, point and cell data from the nodes and entities one by one."""
         nodes = list(part.Nodes)
         kind, entities = self._entities(part)
         index = {node.Id: i for i, node in enumerate(nodes)}
@@ -283,27 +363,17 @@ class VtkOutputProcess(OutputProcess):
             kind = "node"
         point_data = self._point_data(part, nodes, kind, entities, index)
         cell_data = self._cell_data(part, kind, blocks)
-        if not self.binary:
-            points = _round_significant(points, self.precision)
-            point_data = {k: _round_significant(v, self.precision) for k, v in point_data.items()}
-            cell_data = {
-                k: [_round_significant(v, self.precision) for v in blocks_data]
-                for k, blocks_data in cell_data.items()
-            }
-        mesh = meshio.Mesh(
-            points,
-            [(cell_type, connectivity) for cell_type, connectivity, _ in blocks],
-            point_data=point_data,
-            cell_data=cell_data,
-        )
-        with contextlib.redirect_stderr(io.StringIO()):  # meshio warns about ascii on stderr
-            meshio.write(path, mesh, file_format="vtu", binary=self.binary)
+        return points, [(t, c) for t, c, _ in blocks], point_data, cell_data
 
     def _entities(self, part: Any) -> tuple[str, list[Any]]:
+        kind = self._kind(part)
+        return kind, list(part.Elements if kind == "element" else part.Conditions)
+
+    def _kind(self, part: Any) -> str:
+        """What the cells of ``part`` are: "element" or "condition" (warns once about the other)."""
         kind = self.entity_type
         if kind == "automatic":
             kind = "element" if part.NumberOfElements() > 0 else "condition"
-        entities = list(part.Elements if kind == "element" else part.Conditions)
         other = "condition" if kind == "element" else "element"
         if (self.cell_values[other] or self.cell_flags[other]) and other not in self._warned:
             self._warned.add(other)
@@ -316,7 +386,7 @@ class VtkOutputProcess(OutputProcess):
                 other,
                 other,
             )
-        return kind, entities
+        return kind
 
     def _point_data(
         self, part: Any, nodes: list[Any], kind: str, entities: list[Any], index: dict[int, int]
@@ -441,21 +511,63 @@ def _gauss_mean(entity: Any, variable: Any, process_info: Any) -> np.ndarray:
     return np.mean(values, axis=0) if values else np.zeros(1)
 
 
+def _rows(values: np.ndarray, sizes: np.ndarray) -> np.ndarray:
+    """What :func:`_stack` makes of the rows ``values[i, :sizes[i]]`` (zero-padded arrays)."""
+    if np.all(sizes == 1):
+        return values[:, 0].copy() if values.shape[1] else np.zeros(len(values))
+    return values[:, : int(sizes.max())].copy()
+
+
+def _rows_per_block(
+    values: np.ndarray, sizes: np.ndarray, members: list[np.ndarray]
+) -> list[np.ndarray]:
+    """What :func:`_per_block` makes of per-entity rows: stacked per block, one width for all."""
+    stacked = [_rows(values[chosen], sizes[chosen]) for chosen in members]
+    widths = {a.shape[1] if a.ndim == 2 else 0 for a in stacked}
+    if len(widths) > 1:  # meshio needs one width across blocks
+        width = max(widths)
+        stacked = [_widen(a, width) for a in stacked]
+    return stacked
+
+
+def _integration_point_means(
+    values: np.ndarray, sizes: np.ndarray, points: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """Per entity the mean over its integration points (as :func:`_gauss_mean`), padded rows.
+
+    ``values[e]`` holds the ``points[e]`` rows of entity ``e`` one after the other. Entities with
+    the same number of points and row width are averaged together (the same sums as one by one).
+    """
+    count = len(points)
+    widths = np.where(points > 0, sizes // np.maximum(points, 1), 1)
+    means = np.zeros((count, int(widths.max()) if count else 1))
+    shapes = np.unique(np.stack([points, widths], axis=1)[points > 0], axis=0)
+    for k, w in shapes.tolist():
+        chosen = np.flatnonzero((points == k) & (widths == w))
+        means[chosen, :w] = np.mean(values[chosen, : k * w].reshape(-1, k, w), axis=1)
+    return means, widths
+
+
+def _cell_type(geometry_name: str, part: Any, entity_id: int) -> str:
+    """The meshio cell type of a geometry (InputError naming the entity if there is none)."""
+    cell_type = CELL_TYPES.get(geometry_name)
+    if cell_type is None:
+        raise InputError(
+            f'entity {entity_id} of "{part.FullName()}" has the geometry {geometry_name}, '
+            "which vtk_output_process cannot write\n"
+            f"  expected: one of {', '.join(CELL_TYPES)}\n"
+            '  fix:      set "entity_type" to the other kind of entity, or leave this part out'
+        )
+    return cell_type
+
+
 def _cell_blocks(
     entities: list[Any], index: dict[int, int], part: Any
 ) -> list[tuple[str, np.ndarray, list[Any]]]:
     """Group entities by cell type (first-appearance order): (type, connectivity, entities)."""
     grouped: dict[str, tuple[list[list[int]], list[Any]]] = {}
     for entity in entities:
-        geometry_name = entity.GetGeometry().Name()
-        cell_type = CELL_TYPES.get(geometry_name)
-        if cell_type is None:
-            raise InputError(
-                f'entity {entity.Id} of "{part.FullName()}" has the geometry {geometry_name}, '
-                "which vtk_output_process cannot write\n"
-                f"  expected: one of {', '.join(CELL_TYPES)}\n"
-                '  fix:      set "entity_type" to the other kind of entity, or leave this part out'
-            )
+        cell_type = _cell_type(entity.GetGeometry().Name(), part, entity.Id)
         connectivity, members = grouped.setdefault(cell_type, ([], []))
         connectivity.append([index[n.Id] for n in entity.GetNodes()])
         members.append(entity)

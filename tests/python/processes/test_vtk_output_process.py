@@ -343,3 +343,83 @@ def test_vtk_mixed_cell_types_in_2d_and_3d(tmp_path: Path) -> None:
     ]
     assert [list(a) for a in mesh.cell_data["NODAL_AREA"]] == [[1.0], [2.0], [3.0, 5.0], [4.0]]
     np.testing.assert_array_equal(mesh.cells[3].data[0], np.array(elements[3][1]) - 1)
+
+
+def _same_files_both_paths(process: Any, tmp_path: Path) -> None:
+    """The bulk arrays and the per-entity path write byte-identical files for every part."""
+    for part in process.parts:
+        process._write(part, tmp_path / "bulk.vtu")
+        process._gather_bulk = process._gather_per_entity
+        process._write(part, tmp_path / "per_entity.vtu")
+        del process._gather_bulk
+        assert (tmp_path / "bulk.vtu").read_bytes() == (tmp_path / "per_entity.vtu").read_bytes()
+
+
+@pytest.mark.parametrize("file_format", ["binary", "ascii"])
+def test_vtk_bulk_arrays_write_the_same_bytes_as_the_per_entity_path(
+    model: ca.Model, plate: ca.ModelPart, tmp_path: Path, file_format: str
+) -> None:
+    plate.CloneTimeStep(1.0)
+    impose_displacement(plate, 1.0)
+    plate.GetNode(5).SetValue(ca.AUGMENTED_NORMAL_CONTACT_PRESSURE, -3.5)
+    plate.GetNode(5).SetValue(ca.NORMAL, [0.0, 1.0, 0.0])
+    plate.GetNode(2).Set(ca.ACTIVE, True)
+    plate.GetElement(4).SetValue(ca.NODAL_AREA, 0.25)
+    plate.GetElement(2).Set(ca.ACTIVE, True)
+    plate.GetCondition(1).SetValue(ca.LINE_LOAD, [0.0, -2.0, 0.0])
+    elements = _vtk(
+        model,
+        tmp_path,
+        file_format=file_format,
+        write_ids=True,
+        write_deformed_configuration=True,
+        nodal_solution_step_data_variables=["DISPLACEMENT", "REACTION_X"],
+        nodal_data_value_variables=["AUGMENTED_NORMAL_CONTACT_PRESSURE", "NORMAL"],
+        nodal_flags=["ACTIVE"],
+        element_data_value_variables=["NODAL_AREA"],
+        element_flags=["ACTIVE"],
+        gauss_point_variables_in_elements=["VON_MISES_STRESS", "CAUCHY_STRESS_VECTOR"],
+    )
+    _same_files_both_paths(elements, tmp_path)
+    conditions = _vtk(  # the cells' nodes outside the part are appended
+        model,
+        tmp_path,
+        model_part_name="Structure.Top",
+        entity_type="condition",
+        write_ids=True,
+        file_format=file_format,
+        nodal_solution_step_data_variables=["DISPLACEMENT"],
+        condition_data_value_variables=["LINE_LOAD"],
+        condition_flags=["SLAVE"],
+    )
+    _same_files_both_paths(conditions, tmp_path)
+    parts = _vtk(  # nodes-only parts become vertex cells
+        model,
+        tmp_path,
+        output_sub_model_parts=True,
+        write_ids=True,
+        file_format=file_format,
+        nodal_solution_step_data_variables=["DISPLACEMENT"],
+        nodal_flags=["ACTIVE"],
+    )
+    _same_files_both_paths(parts, tmp_path)
+
+
+def test_vtk_bulk_entity_values_rows_and_integration_point_means() -> None:
+    from contact_app.processes.vtk_output_process import _integration_point_means, _rows
+
+    values = np.array([[1.0, 2.0], [3.0, 0.0]])
+    np.testing.assert_array_equal(_rows(values, np.array([1, 1])), [1.0, 3.0])
+    np.testing.assert_array_equal(_rows(values, np.array([2, 1])), values)
+    assert _rows(np.zeros((0, 0)), np.zeros(0, dtype=np.int64)).shape == (0,)
+    rng = np.random.default_rng(5)
+    points = [rng.standard_normal((k, 3)) for k in (4, 9, 9, 0, 4)]
+    flat = np.zeros((5, 27))
+    for e, p in enumerate(points):
+        flat[e, : p.size] = p.ravel()
+    means, widths = _integration_point_means(
+        flat, np.array([p.size for p in points]), np.array([len(p) for p in points])
+    )
+    for e, p in enumerate(points):  # the per-entity mean, bit for bit
+        expected = np.mean(p, axis=0) if len(p) else np.zeros(1)
+        assert means[e, : widths[e]].tolist() == expected.tolist()
