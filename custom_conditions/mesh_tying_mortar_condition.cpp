@@ -2,9 +2,11 @@
 #include "custom_conditions/mesh_tying_mortar_condition.h"
 
 #include <sstream>
+#include <utility>
 
 #include "contact_app/application.h"
 #include "contact_app/kernel/exceptions.h"
+#include "contact_app/kernel/serializer.h"
 #include "contact_app/kernel/variable_registry.h"
 #include "custom_conditions/mortar_pair_settings.h"
 #include "custom_utilities/mortar_geometry_adapters.h"
@@ -84,6 +86,12 @@ const std::vector<const Variable<double>*>& TYING_CLASS::TiedVariables() const {
 
 TYING_TEMPLATE
 void TYING_CLASS::Initialize(const ProcessInfo& rCurrentProcessInfo) {
+    if (std::exchange(mRestored, false)) {
+        // Restarted: integrating again would use the deformed coordinates; the operators of the tied interface
+        // are those of the undeformed pair, as loaded.
+        mTying = ResolveTyingVariables();
+        return;
+    }
     PairedCondition::Initialize(rCurrentProcessInfo);
     mTying = ResolveTyingVariables();
     mOperators.Initialize();
@@ -257,6 +265,25 @@ int TYING_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
         check_node(slave[j], "slave", *tying.multiplier, tying.multipliers);
     }
     return 0;
+}
+
+TYING_TEMPLATE
+void TYING_CLASS::Save(Serializer& rSerializer) const {
+    PairedCondition::Save(rSerializer);
+    rSerializer.Save("MortarOperatorsD", mOperators.D);
+    rSerializer.Save("MortarOperatorsM", mOperators.M);
+    rSerializer.Save("DualBasis", mDual);
+    rSerializer.Save("Initialized", mInitialized);
+}
+
+TYING_TEMPLATE
+void TYING_CLASS::Load(Serializer& rSerializer) {
+    PairedCondition::Load(rSerializer);
+    rSerializer.Load("MortarOperatorsD", mOperators.D);
+    rSerializer.Load("MortarOperatorsM", mOperators.M);
+    rSerializer.Load("DualBasis", mDual);
+    rSerializer.Load("Initialized", mInitialized);
+    mRestored = mInitialized;  // a pair saved before its Initialize still needs it
 }
 
 TYING_TEMPLATE

@@ -32,7 +32,8 @@ public:
     Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
                               Geometry::Pointer master) const override;
 
-    /// Resolves TYING_VARIABLE, integrates and caches D, M; ACTIVE = false when the pair does not overlap.
+    /// Resolves TYING_VARIABLE, integrates and caches D, M; ACTIVE = false when the pair does not overlap. On the
+    /// first call after Load only the variable is resolved: the operators stay those of the saving run.
     /// @throws InputError for an unknown variable or one that is neither double nor a 3-vector
     void Initialize(const ProcessInfo& rCurrentProcessInfo) override;
     /// @param[out] rLeftHandSideMatrix, rRightHandSideVector dof_size·(2 n_s + n_m); zero for a deactivated pair
@@ -59,6 +60,9 @@ public:
     ///         (historical) or its DoFs, or (slave) the multiplier variable or its DoFs
     int Check(const ProcessInfo& rCurrentProcessInfo) const override;
     std::string Info() const override;
+    /// Base state plus the cached operators (integrated once, on the coordinates of the first Initialize).
+    void Save(Serializer& rSerializer) const override;
+    void Load(Serializer& rSerializer) override;
 
     /// The cached operators (zero before Initialize or for a deactivated pair).
     const Operators& GetMortarOperators() const { return mOperators; }
@@ -85,6 +89,7 @@ private:
     Operators mOperators;
     bool mDual = false;
     bool mInitialized = false;
+    bool mRestored = false;  ///< set by Load, consumed by the next Initialize
     mutable TyingVariables mTying;
 };
 

@@ -3,6 +3,7 @@
 
 #include <limits>
 #include <sstream>
+#include <utility>
 
 #include <Eigen/LU>
 
@@ -125,6 +126,9 @@ void MPC_CLASS::ComputePreviousOperators(const ProcessInfo& rCurrentProcessInfo)
 
 MPC_TEMPLATE
 void MPC_CLASS::Initialize(const ProcessInfo& rCurrentProcessInfo) {
+    // A restarted run initializes every entity again: recomputing here would rebuild the constraint on the
+    // restart-time coordinates, while the saving run went on with the one it held (BLOCKED after its step).
+    if (std::exchange(mRestored, false)) return;
     PairedCondition::Initialize(rCurrentProcessInfo);
     mPreviousMortarOperators.Initialize();
     mPreviousMortarOperatorsInitialized = false;
@@ -480,6 +484,7 @@ void MPC_CLASS::Load(Serializer& rSerializer) {
     rSerializer.Load("PreviousMortarOperatorsD", mPreviousMortarOperators.D);
     rSerializer.Load("PreviousMortarOperatorsM", mPreviousMortarOperators.M);
     rSerializer.Load("PreviousMortarOperatorsInitialized", mPreviousMortarOperatorsInitialized);
+    mRestored = true;
 }
 
 MPC_TEMPLATE

@@ -49,7 +49,8 @@ public:
     Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
                               Geometry::Pointer master) const override;
 
-    /// Previous operators if Is(SLIP), then a first constraint update with an empty ProcessInfo.
+    /// Previous operators if Is(SLIP), then a first constraint update with an empty ProcessInfo. Nothing on the first
+    /// call after Load: the restored operators, paired normal and constraint are the state the saving run had.
     void Initialize(const ProcessInfo& rCurrentProcessInfo) override;
     /// Unless Is(BLOCKED): previous operators if Is(SLIP), then the constraint update.
     void InitializeSolutionStep(const ProcessInfo& rCurrentProcessInfo) override;
@@ -114,6 +115,7 @@ private:
 
     Operators mPreviousMortarOperators;
     bool mPreviousMortarOperatorsInitialized = false;
+    bool mRestored = false;  ///< set by Load, consumed by the next Initialize
 };
 
 }  // namespace contact_app

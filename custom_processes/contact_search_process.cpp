@@ -61,7 +61,7 @@ Array3 NodeNormal(const Node& node, const Array3& fallback) {
 }  // namespace
 
 ContactSearchProcess::ContactSearchProcess(ModelPart& main_model_part, ContactSearchSettings settings,
-                                           Properties::Pointer pair_properties)
+                                           Properties::Pointer pair_properties, bool resume)
     : mrMainModelPart(main_model_part), mSettings(std::move(settings)), mpPairProperties(std::move(pair_properties)) {
     mSettings.Validate();
     CONTACT_CHECK(!mSettings.predict_correct_lagrange_multiplier, ConfigurationError,
@@ -89,10 +89,6 @@ ContactSearchProcess::ContactSearchProcess(ModelPart& main_model_part, ContactSe
         if (!mpComputingPart->HasSubModelPart(sub)) mpComputingPart->CreateSubModelPart(sub);
         mpComputingPart = &mpComputingPart->GetSubModelPart(sub);
     }
-    // A fresh search owns no pairs: erase leftovers of a previous search object on the same part.
-    for (const auto& pair : mpComputingPart->Conditions()) pair->Set(TO_ERASE, true);
-    mrMainModelPart.GetRootModelPart().RemoveConditionsFlagged(TO_ERASE);
-
     const ModelPart& root = mrMainModelPart.GetRootModelPart();
     if (root.HasNodalSolutionStepVariable(VECTOR_LAGRANGE_MULTIPLIER))
         mTypeSolution = TypeSolution::VectorLagrangeMultiplier;
@@ -103,6 +99,14 @@ ContactSearchProcess::ContactSearchProcess(ModelPart& main_model_part, ContactSe
                                                  : TypeSolution::FrictionlessPenaltyMethod;
     else if (root.HasNodalSolutionStepVariable(SCALAR_LAGRANGE_MULTIPLIER))
         mTypeSolution = TypeSolution::ScalarLagrangeMultiplier;
+    // Restarted: the pairs are the saving run's, which the next search reuses like the continuous run would (an
+    // MPC pair holds its constraint, recreating it would leave the old one in the model part).
+    if (resume) return;
+
+    // A fresh search owns no pairs: erase leftovers of a previous search object on the same part.
+    for (const auto& pair : mpComputingPart->Conditions()) pair->Set(TO_ERASE, true);
+    mrMainModelPart.GetRootModelPart().RemoveConditionsFlagged(TO_ERASE);
+
 
     if (mSettings.check_gap == CheckGap::MappingCheck)
         for (const auto& node : mpContactPart->Nodes()) node->SetValue(NORMAL_GAP, 0.0);

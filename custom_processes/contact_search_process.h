@@ -44,9 +44,11 @@ public:
     /// @param[in] main_model_part must contain the sub model part "Contact" (and "ContactSub<id_name>")
     /// @param[in] settings validated here
     /// @param[in] pair_properties properties of the created pair conditions (shared); null = the slave face's
+    /// @param[in] resume adopt the pairs (with their INDEX_MAP entries, constraints and flags), the face flags and
+    ///            NORMAL_GAP that a restart file restored; otherwise a fresh search erases leftover pairs
     /// @throws InputError if the contact part is missing, a setting is out of range, or NORMAL is not historical
     ContactSearchProcess(ModelPart& main_model_part, ContactSearchSettings settings,
-                         Properties::Pointer pair_properties = nullptr);
+                         Properties::Pointer pair_properties = nullptr, bool resume = false);
     virtual ~ContactSearchProcess() = default;
     ContactSearchProcess(const ContactSearchProcess&) = delete;
     ContactSearchProcess& operator=(const ContactSearchProcess&) = delete;
@@ -80,6 +82,10 @@ public:
     const ContactSearchSettings& Settings() const { return mSettings; }
     TypeSolution GetTypeSolution() const { return mTypeSolution; }
     const Timings& LastTimings() const { return mTimings; }
+    /// Whether the check for slave nodes starting inside the master ran (it runs at the first search only). A
+    /// restarted run sets what the saving run had, or its first search would check (and pair) again.
+    bool PenetrationChecked() const { return mPenetrationChecked; }
+    void SetPenetrationChecked(bool checked) { mPenetrationChecked = checked; }
     ModelPart& GetContactModelPart() { return *mpContactPart; }
     ModelPart& GetComputingModelPart() { return *mpComputingPart; }
     /// `<condition_name>Condition<d>D<n_slave>N<final_string>`.

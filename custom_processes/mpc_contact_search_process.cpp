@@ -8,8 +8,8 @@
 namespace contact_app {
 
 MPCContactSearchProcess::MPCContactSearchProcess(ModelPart& main_model_part, ContactSearchSettings settings,
-                                                 Properties::Pointer pair_properties)
-    : ContactSearchProcess(main_model_part, std::move(settings), std::move(pair_properties)) {}
+                                                 Properties::Pointer pair_properties, bool resume)
+    : ContactSearchProcess(main_model_part, std::move(settings), std::move(pair_properties), resume) {}
 
 void MPCContactSearchProcess::OnPairCreated(Condition& pair) {
     const auto& registry = Registry<MasterSlaveConstraint>::Instance();

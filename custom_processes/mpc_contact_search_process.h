@@ -14,9 +14,9 @@ namespace contact_app {
 /// pair removes exactly the constraint it holds).
 class MPCContactSearchProcess : public ContactSearchProcess {
 public:
-    /// @throws InputError as ContactSearchProcess
+    /// @throws InputError as ContactSearchProcess (@p resume: as there)
     MPCContactSearchProcess(ModelPart& main_model_part, ContactSearchSettings settings,
-                            Properties::Pointer pair_properties = nullptr);
+                            Properties::Pointer pair_properties = nullptr, bool resume = false);
 
 protected:
     /// @throws ConfigurationError if "ContactMasterSlaveConstraint" is not registered

@@ -6,7 +6,8 @@ Order of the calls (``kratos_python_layer.md`` §1.4):
   ``ModifyInitialProperties`` → ``ModifyInitialGeometry`` → processes created → every process
   ``ExecuteInitialize`` → ``solver.Initialize`` → ``Check`` → ``ModifyAfterSolverInitialize`` →
   every process ``ExecuteBeforeSolutionLoop`` → TIME = start_time (a restarted model part keeps the
-  TIME and STEP of its restart file).
+  TIME and STEP of its restart file, and its processes get their saved ``SetRestartState`` after
+  ``ExecuteInitialize``).
 * ``RunSolutionLoop``: while ``time < end_time`` (up to round-off of the step,
   :func:`contact_app.analysis.time_loop.keep_advancing`): ``AdvanceInTime`` →
   ``InitializeSolutionStep`` (processes ``ExecuteInitializeSolutionStep``,
@@ -35,6 +36,7 @@ from typing import Any
 
 import contact_app as ca
 
+from ..io.restart_utility import RestoreProcessStates
 from ..parameters import Parameters
 from .reporting import IterationStatus, Reporter, StepRecord
 from .solvers.mechanical_solver import STOP_DEFAULT_REASON
@@ -111,6 +113,9 @@ class AnalysisStage:
             self._CreateListsOfProcesses()
             for process in self._GetListOfProcesses():
                 process.ExecuteInitialize()
+            info = solver.GetComputingModelPart().ProcessInfo
+            if info[ca.IS_RESTARTED]:
+                RestoreProcessStates(self._GetListOfProcesses(), info[ca.RESTART_PROCESS_STATES])
             solver.Initialize()
             self.Check()
             self.ModifyAfterSolverInitialize()

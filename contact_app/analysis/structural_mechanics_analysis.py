@@ -31,6 +31,7 @@ from typing import Any
 
 import contact_app as ca
 
+from ..io.restart_utility import ProcessStates, RestartUtility
 from ..json_input import quote
 from ..parameters import Parameters, suggest
 from .analysis_stage import AnalysisStage
@@ -391,6 +392,8 @@ class StructuralMechanicsAnalysis(AnalysisStage):
         """Kratos OutputSolutionStep, then the restart file of the step when one is due."""
         super().OutputSolutionStep()
         if self._restart is not None and self._restart.IsRestartOutputStep():
+            info = self._GetSolver().main_model_part.ProcessInfo
+            info[ca.RESTART_PROCESS_STATES] = ProcessStates(self._GetListOfProcesses())
             self._restart.SaveRestart()
 
     def _CreateRestartSaver(self) -> Any:
@@ -400,8 +403,6 @@ class StructuralMechanicsAnalysis(AnalysisStage):
         options = self.project_parameters["restart_options"]
         if not options["SaveRestart"].GetBool():
             return None
-        from ..io.restart_utility import RestartUtility
-
         return RestartUtility(
             self._GetSolver().main_model_part,
             RestartBaseName(self.project_parameters),

@@ -103,10 +103,11 @@ void BindSearch(py::module_& m) {
     py::class_<TProcess> cls(m, "ContactSearchProcess",
                              "Mortar contact search (Kratos AdvancedContactSearchProcess; simple_search: "
                              "SimpleContactSearchProcess).");
-    cls.def(py::init<ModelPart&, ContactSearchSettings, Properties::Pointer>(), py::arg("main_model_part"),
-            py::arg("settings"), py::arg("pair_properties") = nullptr, py::keep_alive<1, 2>(),
+    cls.def(py::init<ModelPart&, ContactSearchSettings, Properties::Pointer, bool>(), py::arg("main_model_part"),
+            py::arg("settings"), py::arg("pair_properties") = nullptr, py::arg("resume") = false,
+            py::keep_alive<1, 2>(),
             "Search over main_model_part.Contact[.ContactSub<id_name>]; pairs get pair_properties (None: the slave "
-            "face's).")
+            "face's). resume: adopt the pairs and flags a restart file restored instead of erasing them.")
         .def("ExecuteInitialize", &TProcess::ExecuteInitialize, "CheckContactModelParts, CreatePointListMortar, InitializeMortarConditions.")
         .def("ExecuteInitializeSolutionStep", &TProcess::ExecuteInitializeSolutionStep, "ClearMortarConditions + UpdateMortarConditions.")
         .def("ExecuteFinalizeSolutionStep", &TProcess::ExecuteFinalizeSolutionStep, "ClearMortarConditions.")
@@ -132,6 +133,8 @@ void BindSearch(py::module_& m) {
                 return d;
             },
             "Seconds spent in the last UpdateMortarConditions (tree_build, queries, total) and counts.")
+        .def_property("penetration_checked", &TProcess::PenetrationChecked, &TProcess::SetPenetrationChecked,
+                      "Whether the first search's check for initially penetrating slave nodes ran (restart state).")
         .def("GetContactModelPart", &TProcess::GetContactModelPart, py::return_value_policy::reference_internal)
         .def("GetComputingModelPart", &TProcess::GetComputingModelPart, py::return_value_policy::reference_internal)
         .def_property_readonly("settings", &TProcess::Settings, "The settings (a copy).");
@@ -183,8 +186,9 @@ void BindContactSearch(py::module_& m) {
     BindSearch(m);
     py::class_<MPCContactSearchProcess, ContactSearchProcess>(
         m, "MPCContactSearchProcess", "Contact search that also creates a ContactMasterSlaveConstraint per pair.")
-        .def(py::init<ModelPart&, ContactSearchSettings, Properties::Pointer>(), py::arg("main_model_part"),
-             py::arg("settings"), py::arg("pair_properties") = nullptr, py::keep_alive<1, 2>(),
+        .def(py::init<ModelPart&, ContactSearchSettings, Properties::Pointer, bool>(), py::arg("main_model_part"),
+             py::arg("settings"), py::arg("pair_properties") = nullptr, py::arg("resume") = false,
+             py::keep_alive<1, 2>(),
              "As ContactSearchProcess; ConfigurationError at the first pair if the constraint is not registered.");
 }
 

@@ -304,6 +304,9 @@ private:
             constraint->CalculateLocalSystem(relation, constant, info);
             mOut.PutMatrix(relation);
             mOut.PutVector(constant);
+            // The test relation W of a slipping MPC node (Coulomb force) outlives the step: BLOCKED pairs keep it.
+            Matrix test;
+            mOut.PutMatrix(constraint->CalculateTestRelation(test, info) ? test : Matrix(0, 0));
         }
     }
 

@@ -20,7 +20,7 @@ class ModelPart;
 /// Format and guarantees: docs/running.md, "Restart and checkpoints".
 class ModelPartCheckpoint {
 public:
-    static constexpr std::uint32_t kFormatVersion = 1;
+    static constexpr std::uint32_t kFormatVersion = 2;  ///< 2: constraints store their test relation
     static constexpr std::size_t kHeaderSize = 32;
 
     /// What the header and the first payload section say (Inspect()).

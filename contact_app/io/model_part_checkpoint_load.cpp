@@ -45,6 +45,7 @@ struct ConstraintRecord {
     std::vector<std::pair<IndexType, const Variable<double>*>> slaves, masters;
     Matrix relation;
     Vector constant;
+    Matrix test_relation;  ///< empty: W = T
     MasterSlaveConstraint::Pointer created;
 };
 
@@ -333,6 +334,10 @@ private:
             }
             record.relation = mIn.GetMatrix();
             record.constant = mIn.GetVector();
+            record.test_relation = mIn.GetMatrix();
+            if (record.test_relation.size() > 0 && (record.test_relation.rows() != record.relation.rows() ||
+                                                    record.test_relation.cols() != record.relation.cols()))
+                mIn.Fail("constraint " + std::to_string(record.id) + " has a test relation of another shape than T");
         }
     }
 
@@ -418,6 +423,7 @@ private:
         };
         const auto& prototype = Registry<MasterSlaveConstraint>::Instance().Get(record.name);
         auto constraint = prototype.Create(record.id, dofs(record.masters), dofs(record.slaves), record.relation, record.constant);
+        if (record.test_relation.size() > 0) constraint->SetTestRelation(record.test_relation, ProcessInfo());
         static_cast<Flags&>(*constraint) = record.flags;
         constraint->Data() = record.data;
         // Pending pointers recorded against the record's container now live in the constraint's.

@@ -13,6 +13,7 @@ TIME (``restart_control_type`` "time", printed with 12 significant digits) or th
 from __future__ import annotations
 
 import contextlib
+import json
 import logging
 import os
 from pathlib import Path
@@ -134,6 +135,44 @@ class RestartUtility:
         self.model_part.ProcessInfo[ca.IS_RESTARTED] = True
         self.next_output = self._Control() + self.frequency
         return file
+
+
+def _ProcessKey(index: int, process: Any) -> str:
+    kind = type(process)
+    return f"{index}:{kind.__module__}.{kind.__qualname__}"
+
+
+def ProcessStates(processes: list[Any]) -> str:
+    """The restart state of every process that has one, as JSON keyed by list position and class.
+
+    Stored in the ProcessInfo (RESTART_PROCESS_STATES) before a restart file is written, so that
+    the file carries what the processes keep in Python (output counters, search state).
+    """
+    states = {}
+    for index, process in enumerate(processes):
+        state = getattr(process, "GetRestartState", lambda: None)()
+        if state is not None:
+            states[_ProcessKey(index, process)] = state
+    return json.dumps(states, sort_keys=True)
+
+
+def RestoreProcessStates(processes: list[Any], text: str) -> None:
+    """Hand each process of a restarted run the state its counterpart saved (same position, class).
+
+    A process whose saved state is missing (the restarted run lists other processes) resumes from
+    the model part alone; its state is ignored with a warning.
+    """
+    states = json.loads(text) if text else {}
+    for index, process in enumerate(processes):
+        state = states.pop(_ProcessKey(index, process), None)
+        if state is not None:
+            process.SetRestartState(state)
+    for key in states:
+        logger.warning(
+            "restart: the saved state of process %s matches no process of this run (the process "
+            "lists differ); it is ignored",
+            key,
+        )
 
 
 def RestartFile(input_filename: str, label: str, in_folder: bool = True) -> Path:

@@ -15,7 +15,9 @@ class TableStreamUtility;
 // Kernel (Kratos core) and structural (Kratos StructuralMechanicsApplication) variables, with their
 // Kratos names and types (../shared/spec/variables.md §2). One table declares and defines them.
 
-/// Scalar, vector, matrix, string and pointer variables: X(type, NAME).
+/// Scalar, vector, matrix, string and pointer variables: X(type, NAME). RESTART_PROCESS_STATES is contact_app's own:
+/// the JSON state of the Python processes (output counters, search state) that a restart file carries in the
+/// ProcessInfo (contact_app/io/restart_utility.py).
 #define CONTACT_APP_KERNEL_VARIABLES(X)                                                          \
     X(double, TIME) X(double, DELTA_TIME) X(int, STEP) X(int, NL_ITERATION_NUMBER)               \
     X(int, DOMAIN_SIZE) X(bool, IS_RESTARTED) X(double, CONVERGENCE_RATIO) X(double, RESIDUAL_NORM) \
@@ -34,7 +36,7 @@ class TableStreamUtility;
     X(Vector, ALMANSI_STRAIN_VECTOR) X(Vector, INITIAL_STRAIN_VECTOR)                            \
     X(Matrix, CAUCHY_STRESS_TENSOR) X(Matrix, PK2_STRESS_TENSOR) X(Matrix, GREEN_LAGRANGE_STRAIN_TENSOR) \
     X(Matrix, ALMANSI_STRAIN_TENSOR) X(Matrix, DEFORMATION_GRADIENT) X(Matrix, CONSTITUTIVE_MATRIX) \
-    X(std::string, IDENTIFIER)                                                                    \
+    X(std::string, IDENTIFIER) X(std::string, RESTART_PROCESS_STATES)                             \
     X(std::shared_ptr<ConstitutiveLaw>, CONSTITUTIVE_LAW)                                        \
     X(std::shared_ptr<MasterSlaveConstraint>, MASTER_SLAVE_CONSTRAINT)                             \
     X(std::shared_ptr<TableStreamUtility>, TABLE_UTILITY)

@@ -131,6 +131,14 @@ class FromJsonCheckResultProcess(Process):
             self._time_counter = 0.0
             self.check(process_info[_core.TIME])
 
+    def GetRestartState(self) -> dict[str, Any]:
+        """The time since the last check (a restarted run checks at the same times)."""
+        return {"time_counter": self._time_counter}
+
+    def SetRestartState(self, state: dict[str, Any]) -> None:
+        """Resume the counter of the saving run."""
+        self._time_counter = float(state["time_counter"])
+
     def check(self, time: float) -> None:
         """Compare every checked value with the reference at the stored time nearest to ``time``.
 

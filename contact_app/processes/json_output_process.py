@@ -13,11 +13,17 @@ the sum over the nodes under ``"RESULTANT"`` instead of one entry per node),
 ``ExecuteBeforeSolutionLoop`` writes the empty skeleton; at the end of a step DELTA_TIME is added to
 a counter and only when it **strictly exceeds** ``time_frequency`` is it reset and TIME plus the
 values appended and the whole file rewritten.
+
+After a restart (ProcessInfo IS_RESTARTED) the file of the interrupted run is read back, cut to the
+entries it held when the restart file was written (steps written after it, by a run killed later,
+are dropped) and continued with the counter of that moment, so the whole run's file is the one a
+run without the restart writes. Without the file the restarted run writes its own steps only.
 """
 
 from __future__ import annotations
 
 import json
+import logging
 import os
 from pathlib import Path
 from typing import Any
@@ -37,6 +43,8 @@ from ._json_results import (
 )
 from ._utilities import validate
 from .process import Process
+
+LOGGER = logging.getLogger(__name__)
 
 DEFAULTS = {
     "output_variables": [],
@@ -94,11 +102,63 @@ class JsonOutputProcess(Process):
         self.use_node_coordinates = settings["use_node_coordinates"].GetBool()
         self.data: dict[str, Any] | None = None
         self._time_counter = 0.0
+        self._restart_state: dict[str, Any] | None = None
 
     def ExecuteBeforeSolutionLoop(self) -> None:
-        """Write the skeleton (TIME and one empty list per entity and column)."""
+        """Write the skeleton (TIME and one empty list per entity and column); restarts: above."""
+        if self.model_part.ProcessInfo[_core.IS_RESTARTED] and self._resume():
+            return
         self._skeleton()
         self._write()
+
+    def GetRestartState(self) -> dict[str, Any]:
+        """The counter and the number of entries written so far."""
+        written = len(self.data["TIME"]) if self.data is not None else 0
+        return {"time_counter": self._time_counter, "entries": written}
+
+    def SetRestartState(self, state: dict[str, Any]) -> None:
+        """Keep the saved counter and entry count for ``ExecuteBeforeSolutionLoop``."""
+        self._restart_state = state
+
+    def _resume(self) -> bool:
+        """Continue the file of the interrupted run; False (with a warning) when it is unusable."""
+        path = Path(self.output_file_name)
+        try:
+            data = json.loads(path.read_text(encoding="utf-8"))
+        except (OSError, ValueError) as failure:
+            LOGGER.warning(
+                'json_output_process: after the restart "%s" cannot be continued (%s); it is '
+                "written again with the steps after the restart only",
+                path,
+                failure,
+            )
+            return False
+        if not isinstance(data, dict) or not isinstance(data.get("TIME"), list):
+            LOGGER.warning(
+                'json_output_process: "%s" has no TIME list; it is written again with the steps '
+                "after the restart only",
+                path,
+            )
+            return False
+        if self._restart_state is not None:
+            entries = int(self._restart_state["entries"])
+            self._time_counter = float(self._restart_state["time_counter"])
+        else:  # a restart file without this process' state: the entries up to its TIME
+            time = float(self.model_part.ProcessInfo[_core.TIME])
+            reach = time + 1e-9 * max(1.0, abs(time))
+            entries = sum(1 for t in data["TIME"] if t <= reach)
+        if len(data["TIME"]) < entries:
+            LOGGER.warning(
+                'json_output_process: "%s" holds %d of the %d entries written before the restart; '
+                "it goes on from them",
+                path,
+                len(data["TIME"]),
+                entries,
+            )
+        _truncate(data, entries)
+        self.data = data
+        self._write()
+        return True
 
     def ExecuteFinalizeSolutionStep(self) -> None:
         """Append this step if the time since the last output exceeds ``time_frequency``."""
@@ -176,6 +236,15 @@ class JsonOutputProcess(Process):
 def _plain(value: Any) -> float | list[float]:
     array = np.asarray(value, dtype=float)
     return float(array) if array.ndim == 0 else [float(v) for v in array.ravel()]
+
+
+def _truncate(tree: dict[str, Any], count: int) -> None:
+    """Cut every series (TIME included) to its first ``count`` entries."""
+    for value in tree.values():
+        if isinstance(value, dict):
+            _truncate(value, count)
+        elif isinstance(value, list):
+            del value[count:]
 
 
 def _pad(tree: dict[str, Any], count: int) -> None:

@@ -5,9 +5,16 @@ and ``Check`` once, ``ExecuteBeforeSolutionLoop`` once, then per step
 ``ExecuteInitializeSolutionStep`` → solve → ``ExecuteFinalizeSolutionStep``, then
 ``ExecuteBeforeOutputStep`` / ``PrintOutput`` / ``ExecuteAfterOutputStep`` when some output process
 reports ``IsOutputStep()``, and ``ExecuteFinalize`` at the end.
+
+Restart (contact_app's own, not Kratos'): ``GetRestartState`` returns what a process keeps between
+steps in Python (counters, schedules), JSON-serialisable; the analysis stores it in each restart
+file and hands it back to ``SetRestartState`` of the same process of the restarted run, after
+``ExecuteInitialize`` and before ``ExecuteBeforeSolutionLoop``.
 """
 
 from __future__ import annotations
+
+from typing import Any
 
 
 class Process:
@@ -39,6 +46,13 @@ class Process:
 
     def Check(self) -> None:
         """Check the settings against the model; raise InputError if something is wrong."""
+
+    def GetRestartState(self) -> dict[str, Any] | None:
+        """What a restart needs of this process beyond the model part (None: nothing)."""
+        return None
+
+    def SetRestartState(self, state: dict[str, Any]) -> None:
+        """Take back the state ``GetRestartState`` gave when the restart file was written."""
 
 
 class OutputProcess(Process):

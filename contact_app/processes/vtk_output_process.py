@@ -233,6 +233,14 @@ class VtkOutputProcess(OutputProcess):
             if entries:
                 _write_pvd(pvd, kept)
 
+    def GetRestartState(self) -> dict[str, Any]:
+        """The next output TIME (STEP) of the schedule."""
+        return {"next_output": self.next_output}
+
+    def SetRestartState(self, state: dict[str, Any]) -> None:
+        """Resume the saving run's schedule (``_resume`` only rebuilds one that started at 0)."""
+        self.next_output = float(state["next_output"])
+
     def IsOutputStep(self) -> bool:
         """True if the current step/time has reached the next output."""
         process_info = self.model_part.ProcessInfo

@@ -271,6 +271,15 @@ class ALMContactProcess(SearchBaseProcess):
                 ca.VariableUtils().SetFlag(ca.SLIP, False, self.contact_model_part.Nodes)
                 self.slip_reset_counter = 0
 
+    def GetRestartState(self) -> dict[str, Any]:
+        """The search state and the SLIP reset counter."""
+        return {**super().GetRestartState(), "slip_reset_counter": self.slip_reset_counter}
+
+    def SetRestartState(self, state: dict[str, Any]) -> None:
+        """Resume the search state and the SLIP reset counter of the saving run."""
+        super().SetRestartState(state)
+        self.slip_reset_counter = int(state["slip_reset_counter"])
+
     def ExecuteBeforeOutputStep(self) -> None:
         """Zero the augmented pressures of inactive nodes (``clear_inactive_for_post``)."""
         if not self.settings["clear_inactive_for_post"].GetBool():

@@ -77,8 +77,8 @@ class MPCContactProcess(SearchBaseProcess):
     def _set_additional_parameters(self, settings: dict[str, Any]) -> None:
         settings["pure_slip"] = False
 
-    def _create_search_process(self, settings: Any, properties: Any) -> Any:
-        return _core.MPCContactSearchProcess(self.main_model_part, settings, properties)
+    def _create_search_process(self, settings: Any, properties: Any, resume: bool) -> Any:
+        return _core.MPCContactSearchProcess(self.main_model_part, settings, properties, resume)
 
     def _initialize_search_values(self) -> None:
         super()._initialize_search_values()

@@ -301,14 +301,30 @@ class SearchBaseProcess(Process):
         root = main.GetRootModelPart()
         for key in self.pairs:
             self.pair_properties[key] = root.GetProperties(self.property_ids[key] or 100 + int(key))
-            self.searches[key] = self._create_search(key)
+            self.searches[key] = self._create_search(key, resume=True)
+        # Without a saved state (SetRestartState): the counter of a run searching from step 1.
         step = int(main.ProcessInfo[ca.STEP])
-        if step >= 1:  # the counter of the continuous run after that step
+        if step >= 1:
             self.database_step = (step - 1) % max(self.database_step_update, 1)
         # The searches mark the faces they own; the file holds the marks of the first run.
         ca.VariableUtils().SetFlag(ca.MARKER, False, self.contact_model_part.Conditions)
         for search in self.searches.values():
             search.ExecuteInitialize()
+            search.penetration_checked = step >= 1
+
+    def GetRestartState(self) -> dict[str, Any]:
+        """The search counter and whether each search made its first-search penetration check."""
+        return {
+            "database_step": self.database_step,
+            "penetration_checked": {k: s.penetration_checked for k, s in self.searches.items()},
+        }
+
+    def SetRestartState(self, state: dict[str, Any]) -> None:
+        """Resume the counter and the checks of the saving run (after ``ExecuteInitialize``)."""
+        self.database_step = int(state["database_step"])
+        for key, checked in state["penetration_checked"].items():
+            if key in self.searches:
+                self.searches[key].penetration_checked = bool(checked)
 
     def ExecuteInitializeSolutionStep(self) -> None:
         """Search (or keep) the pairs of this step; outside the interval every pair is inactive."""
@@ -367,8 +383,8 @@ class SearchBaseProcess(Process):
     def _set_additional_parameters(self, settings: dict[str, Any]) -> None:
         """Extra search settings of a subclass (``pure_slip``)."""
 
-    def _create_search_process(self, settings: Any, properties: Any) -> Any:
-        return _core.ContactSearchProcess(self.main_model_part, settings, properties)
+    def _create_search_process(self, settings: Any, properties: Any, resume: bool) -> Any:
+        return _core.ContactSearchProcess(self.main_model_part, settings, properties, resume)
 
     # -- helpers --
 
@@ -503,10 +519,10 @@ class SearchBaseProcess(Process):
         self._set_additional_parameters(values)
         return values
 
-    def _create_search(self, key: str) -> Any:
+    def _create_search(self, key: str, resume: bool = False) -> Any:
         settings = _core.ContactSearchSettings()
         for field, value in self._search_settings_for(key).items():
             if not hasattr(settings, field):
                 raise ca.InternalError(f"ContactSearchSettings has no field {field!r}")
             setattr(settings, field, value)
-        return self._create_search_process(settings, self.pair_properties[key])
+        return self._create_search_process(settings, self.pair_properties[key], resume)

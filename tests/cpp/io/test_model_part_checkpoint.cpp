@@ -59,6 +59,9 @@ void FillModel(ModelPart& part) {
     Node& master = part.GetNode(4);
     part.CreateNewMasterSlaveConstraint("LinearMasterSlaveConstraint", 5, master, DISPLACEMENT_X, slave, DISPLACEMENT_X,
                                         0.5, 0.125);
+    Matrix test(1, 1);
+    test(0, 0) = 0.75;  // the test relation W of a slipping MPC node
+    part.GetMasterSlaveConstraint(5).SetTestRelation(test, part.GetProcessInfo());
     ModelPart& sub = part.CreateSubModelPart("Contact");
     sub.AddNodes({1, 2});
     sub.AddConditions({3});
@@ -106,6 +109,9 @@ TEST(ModelPartCheckpoint, RoundTripIsExactAndIndependentOfTheVariableOrder) {
     loaded.GetMasterSlaveConstraint(5).CalculateLocalSystem(relation, constant, loaded.GetProcessInfo());
     EXPECT_EQ(relation(0, 0), 0.5);
     EXPECT_EQ(constant[0], 0.125);
+    Matrix test;
+    ASSERT_TRUE(loaded.GetMasterSlaveConstraint(5).CalculateTestRelation(test, loaded.GetProcessInfo()));
+    EXPECT_EQ(test(0, 0), 0.75);
     EXPECT_TRUE(loaded.GetSubModelPart("Contact").Is(INTERACTION));
     EXPECT_TRUE(loaded.GetSubModelPart("Contact.Slave").HasNode(2));
     EXPECT_TRUE(loaded.GetSubModelPart("Contact").HasCondition(3));
