@@ -1,0 +1,376 @@
+"""Ours against the reference on the models of its example collection (issue 17 item 5).
+
+The models are read from ``../shared/kratos_examples`` at run time. The reference numbers are
+``data/kratos_examples/<model>.json``, written by ``scripts/oracle/kratos_examples.py`` (Kratos
+10.4.4 from PyPI, one thread, at most 120 s of wall time per model): the named nodes'
+displacement, the reaction sums per support, the active slave nodes and the contact pressure at
+the first step, the fifth and the quarters of the steps the reference finished. What is recorded
+and how is ``kratos_examples_common.py``, the same code for both systems.
+
+Each model is run here to a time the reference reached (``CASES``) and compared at every fixture
+snapshot up to it. How far each system gets, and the tolerances:
+
+| model | reference (120 s cap) | compared here | largest difference |
+|---|---|---|---|
+| press fit 2D | t = 0.641, then an inverted element | t <= 0.005 | 7.5e-7 |
+| press fit 3D | step 1; 2-13 unconverged; singular | step 1, y only | 2.5 % (ref asymmetric) |
+| cylinders vertical | t = 0.29 | t <= 0.29 (slow) | 6.2e-4 reactions |
+| cylinders horizontal 1 | t = 0.1275 | t <= 0.1275 (slow) | 8.5e-4 displacement |
+| cylinders horizontal 2 | t = 0.1475 | t <= 0.1475 (slow) | 1.6e-2 reactions (ref) |
+| horizontal 2 frictional | t = 0.32 (step 1 unconverged) | strict xfail: ours stops at 0.0512 | |
+| hyperelastic tubes | step 1; step 2 unconverged | step 1 | 7.1 % reaction (ref) |
+| double arch | t = 0.0025; 6-8 unconverged | t <= 0.0025 | 1.5e-3 pressure |
+| double arch frictional | stops in step 1 (CONTACT LOST) | ours: step 1; xfail: stops at 2 | |
+
+Sizes: displacement over the largest displacement component of the named nodes, reactions over
+the largest reaction of the reference's converged snapshots, pressures relative, active nodes
+as a count. Each tolerance is about twice the measured difference where the two agree; where
+they differ more, the test next to the case says which is right and why (reference steps that
+did not converge, reactions that do not balance, a symmetric problem solved asymmetrically,
+Coulomb's law not obeyed), and the reference's own defect is asserted on the fixture.
+Contact pressure: compared where neither system has a spike (the largest pressure agrees to
+0.6 % on the cylinders up to the times above; the spikes of the issue come later, from t = 0.2 on
+horizontal 1, and are being fixed separately), at 1e-2 for the largest and the median.
+"""
+
+from __future__ import annotations
+
+import functools
+import json
+import math
+from pathlib import Path
+
+import kratos_examples_common as common
+import pytest
+
+DATA = Path(__file__).parent / "data" / "kratos_examples"
+
+pytestmark = pytest.mark.skipif(
+    not common.EXAMPLES.is_dir(), reason="../shared/kratos_examples is missing"
+)
+
+
+def _fixture(name: str) -> dict:
+    return json.loads((DATA / f"{name}.json").read_text())
+
+
+@pytest.mark.parametrize("name", list(common.MODELS))
+def test_fixture_is_of_this_mesh_and_reference(name: str) -> None:
+    fixture = _fixture(name)
+    assert fixture["mdpa_sha256"] == common.mdpa_sha256(name)
+    assert fixture["kratos"] == "10.4.4"
+    assert fixture["threads"] == 1
+    assert fixture["snapshots"] or fixture["failure"], "the reference finished no step"
+
+
+@functools.cache
+def _ours(name: str, end_time: float) -> tuple[list[dict], list[dict], str | None]:
+    """Our run of ``name`` to ``end_time``: history, snapshots at the fixture's times, failure."""
+    times = [record["time"] for record in _fixture(name)["snapshots"]]
+
+    def wanted(time: float) -> bool:
+        return any(abs(time - t) <= 1.0e-9 * max(1.0, abs(t)) for t in times)
+
+    analysis, failure = common.run_ours(name, end_time, keep_snapshots=wanted)
+    return analysis.history, analysis.snapshots, failure
+
+
+def _scale(values) -> float:
+    return max((abs(v) for vector in values for v in vector), default=0.0)
+
+
+def reaction_scale(fixture: dict) -> float:
+    """The largest reaction component of the reference over its converged snapshots."""
+    return max(
+        _scale(record["reactions"].values())
+        for record in fixture["snapshots"]
+        if _converged_in_reference(fixture, record["time"])
+    )
+
+
+def differences(ours: dict, reference: dict, reactions: float) -> dict[str, float]:
+    """The sizes of the differences of two snapshots, each relative to its natural scale.
+
+    displacement: the largest component difference over the named nodes, over the largest
+    displacement component of the named nodes; reactions: the largest component difference over
+    the supports, over ``reactions`` (the model's reaction scale: before contact the reactions
+    are round-off); active: the difference in the count of active slave nodes (absolute);
+    pressure_median and pressure_max: relative to the reference's value (0 when both are 0).
+    """
+    u_ref = reference["displacement"]
+    du = max(
+        abs(a - b)
+        for key in u_ref
+        for a, b in zip(ours["displacement"][key], u_ref[key], strict=True)
+    )
+    r_ref = reference["reactions"]
+    dr = max(
+        abs(a - b) for key in r_ref for a, b in zip(ours["reactions"][key], r_ref[key], strict=True)
+    )
+
+    def relative(key: str) -> float:
+        if reference[key] == 0.0:
+            return 0.0 if ours[key] == 0.0 else math.inf
+        return abs(ours[key] - reference[key]) / abs(reference[key])
+
+    return {
+        "displacement": du / max(_scale(u_ref.values()), 1e-300),
+        "reactions": dr / reactions,
+        "active": float(abs(ours["active"] - reference["active"])),
+        "pressure_median": relative("pressure_median"),
+        "pressure_max": relative("pressure_max"),
+    }
+
+
+def _converged_in_reference(fixture: dict, when: float) -> bool:
+    step = common.at_time(fixture["history"], when)
+    return step is not None and step["converged"] is not False
+
+
+def _imbalance(record: dict) -> list[float]:
+    """The sum of the reactions over all supports (the models have no other load)."""
+    return [sum(vector[i] for vector in record["reactions"].values()) for i in range(3)]
+
+
+def compare(name: str, until: float, tolerances: dict[str, float]) -> dict[str, float]:
+    """Run ours to ``until``; compare at every fixture snapshot up to it; the largest differences.
+
+    Snapshots where the reference did not converge are left out (checked separately). Before the
+    first contact (no active node in the reference) only the displacements are compared and our
+    reactions must vanish (see test_reference_reactions_do_not_balance_before_contact).
+    """
+    fixture = _fixture(name)
+    history, snapshots, failure = _ours(name, until)
+    assert failure is None, failure
+    assert all(step["converged"] is not False for step in history)
+    assert history[-1]["time"] == pytest.approx(until, rel=1e-9)
+    scale = reaction_scale(fixture)
+    largest: dict[str, float] = {}
+    compared = 0
+    for reference in fixture["snapshots"]:
+        late = reference["time"] > until + 1e-9
+        if late or not _converged_in_reference(fixture, reference["time"]):
+            continue
+        ours = common.at_time(snapshots, reference["time"])
+        assert ours is not None, f"no snapshot of ours at t = {reference['time']}"
+        sizes = differences(ours, reference, scale)
+        if name.startswith(("cylinders", "hyperelastic")):  # disjoint supports, no load: balance
+            # measured: 3e-6 (cylinders), 3.4e-5 (tubes); the reference: up to 6.4e-2
+            assert max(abs(value) for value in _imbalance(ours)) <= 1e-4 * scale
+        if reference["active"] == 0:
+            assert ours["active"] == 0
+            assert _scale(ours["reactions"].values()) <= 1e-5 * scale
+            sizes = {"displacement": sizes["displacement"]}
+        for key, size in sizes.items():
+            largest[key] = max(largest.get(key, 0.0), size)
+        compared += 1
+    assert compared > 0
+    for key, size in largest.items():
+        assert size <= tolerances[key], f"t <= {until}: {key} differs by {size:.3g}"
+    return largest
+
+
+def _tolerances(
+    displacement: float,
+    reactions: float = 0.0,
+    active: float = 0.0,
+    pressure_median: float = 0.0,
+    pressure_max: float = 0.0,
+) -> dict[str, float]:
+    return {
+        "displacement": displacement,
+        "reactions": reactions,
+        "active": active,
+        "pressure_median": pressure_median,
+        "pressure_max": pressure_max,
+    }
+
+
+#: model -> [(compare up to this TIME, slow, tolerances)]. The TIMEs are fixture snapshot times.
+CASES: dict[str, list[tuple[float, bool, dict[str, float]]]] = {
+    # Pressing phase (steps 1-5): measured 7.5e-7, 9.5e-10, 0, 4.5e-8, 2.0e-6.
+    "press_fit_2d": [(0.005, False, _tolerances(1e-5, 1e-5, 0, 1e-5, 1e-5))],
+    # Before contact (t < 0.12): displacement only, 3.3e-5. To t = 0.29 (16 active nodes):
+    # 2.3e-4, 6.2e-4, 0, 2.9e-3, 5.8e-3.
+    "cylinders_vertical": [
+        (0.025, False, _tolerances(1e-4)),
+        (0.29, True, _tolerances(5e-4, 1.5e-3, 0, 1e-2, 1e-2)),
+    ],
+    # Before contact: 8.5e-4 (the reference's unbalanced force deforms the upper cylinder). To
+    # t = 0.1275 (11 active nodes): 8.5e-4, 4.1e-4, 0, 1.3e-3, 1.8e-3.
+    "cylinders_horizontal_1": [
+        (0.0125, False, _tolerances(2e-3)),
+        (0.1275, True, _tolerances(2e-3, 1e-3, 0, 1e-2, 1e-2)),
+    ],
+    # As horizontal 1; the reactions differ by the reference's own imbalance (2.2e5, 1.6e-2 of the
+    # scale; ours 20): measured 8.6e-4, 1.6e-2, 0, 3.4e-3, 4.2e-3 to t = 0.1475 (15 active).
+    "cylinders_horizontal_2": [
+        (0.0125, False, _tolerances(2e-3)),
+        (0.1475, True, _tolerances(2e-3, 2.5e-2, 0, 1e-2, 1e-2)),
+    ],
+    # Step 1 only (the reference's step 2 stops unconverged at 20 iterations). One active node.
+    # The reference converged step 1 in one iteration with its two supports out of balance by
+    # 6.4 % (1.896e-4 against 1.775e-4; ours balance to 4e-5 at 1.762e-4, 0.7 % from the
+    # reference's second support): reactions 7.1e-2, pressure 6.8 % (the same ratio: the
+    # reference's contact force equals its unbalanced first reaction); displacement 7.3e-3.
+    "hyperelastic_tubes": [(0.05, False, _tolerances(1.5e-2, 0.1, 0, 0.1, 0.1))],
+    # Steps 1-5 (the reference's steps 6-8 stop unconverged at 20 iterations): 1.1e-4, 1.1e-3, 0,
+    # 1.5e-3, 1.7e-4; 24 active nodes.
+    "double_arch": [(0.0025, False, _tolerances(3e-4, 3e-3, 0, 5e-3, 1e-3))],
+}
+
+
+def _params():
+    for name, cases in CASES.items():
+        for until, slow, tolerances in cases:
+            marks = [pytest.mark.slow] if slow else []
+            yield pytest.param(name, until, tolerances, marks=marks, id=f"{name}-t{until:g}")
+
+
+@pytest.mark.parametrize(("name", "until", "tolerances"), list(_params()))
+def test_agrees_with_reference(name: str, until: float, tolerances: dict[str, float]) -> None:
+    sizes = compare(name, until, tolerances)
+    print(name, until, {key: f"{size:.3g}" for key, size in sizes.items()})
+
+
+def test_press_fit_3d_first_step_is_symmetric_where_the_reference_is_not() -> None:
+    """The 3D press fit: the reference converges step 1 only; ours converges all 13 of its steps.
+
+    The mesh is a structured extrusion (hexahedra, 0 <= z <= 0.25) with the channel fixed in z
+    and the block free, so the problem, and its discrete solution, are mirror-symmetric about
+    z = 0.125, where the named nodes lie: their z displacement and the z reactions must vanish.
+    Ours: 1e-12 of the displacement. The reference, at its only converged step, moves the block's
+    contact face in z by 0.2 of its largest displacement and carries a z force of 11834 from the
+    block into the channel (a tangential contact force that breaks the symmetry); then its steps
+    2-13 stop at max_iteration unconverged with the block's reactions out of balance by 1e8 and it
+    gives up at step 14 on a singular matrix. So only the symmetric part of step 1 is compared:
+    the y components agree within 3.5 % (measured: 2.5 % displacement, 1.9 % reaction).
+    """
+    fixture = _fixture("press_fit_3d")
+    converged = [step["converged"] for step in fixture["history"]]
+    assert converged == [True] + [False] * 12
+    history, snapshots, failure = _ours("press_fit_3d", fixture["reached_time"])
+    assert failure is None and len(history) == 13
+    assert all(step["converged"] for step in history)
+    reference = fixture["snapshots"][0]
+    ours = common.at_time(snapshots, reference["time"])
+    size = _scale(ours["displacement"].values())
+    assert max(abs(u[2]) for u in ours["displacement"].values()) <= 1e-9 * size
+    assert max(abs(u[2]) for u in reference["displacement"].values()) >= 0.1 * size
+    forces = _scale(ours["reactions"].values())
+    assert max(abs(r[2]) for r in ours["reactions"].values()) <= 1e-8 * forces
+    assert max(abs(r[2]) for r in reference["reactions"].values()) >= 0.03 * forces
+    for key, u in reference["displacement"].items():
+        assert ours["displacement"][key][1] == pytest.approx(u[1], abs=0.035 * size)
+    for key, r in reference["reactions"].items():
+        assert ours["reactions"][key][1] == pytest.approx(r[1], abs=0.035 * forces)
+    assert ours["active"] == reference["active"]
+
+
+def _coulomb_ratio(record: dict) -> float:
+    """Press fit 2D: the force pushing the block along x over the force pressing it down."""
+    push = record["reactions"]["DISPLACEMENT_Displacement_Auto3"][0]
+    press = record["reactions"]["DISPLACEMENT_Displacement_Auto1"][1]
+    return abs(push / press)
+
+
+def test_press_fit_2d_slides_with_coulomb_friction_where_the_reference_does_not() -> None:
+    """The 2D press fit after the pressing phase: the block slides along the straight channel.
+
+    At t = 0.231 (the fixture's third snapshot, before the channel narrows) every contact node
+    slides, the contact normals are along y, and Coulomb's law with the process's
+    friction_coefficients (mu = 0.1) makes the pushing force mu times the pressing force. Ours:
+    0.1000 (and the contact force sum(area * p) equals the pressing reaction to 1e-3: equilibrium
+    of contact forces against reactions). The reference: 0.0038, as if mu were 0.004; its
+    pressing forces are also 9 % lower. So from the start of sliding the two differ by the
+    reference's friction (displacements 7e-4 at t = 0.231, reactions 0.3 after, pressure up to
+    1.2x), and ours is the one that obeys Coulomb's law: the comparison with the reference stops
+    at the end of the pressing phase (test_agrees_with_reference, t <= 0.005).
+    """
+    fixture = _fixture("press_fit_2d")
+    reference = fixture["snapshots"][2]
+    assert reference["time"] == pytest.approx(0.231)
+    history, snapshots, failure = _ours("press_fit_2d", reference["time"])
+    assert failure is None and all(step["converged"] for step in history)
+    ours = common.at_time(snapshots, reference["time"])
+    assert _coulomb_ratio(ours) == pytest.approx(0.1, rel=1e-3)
+    assert _coulomb_ratio(reference) < 0.01
+    press = ours["reactions"]["DISPLACEMENT_Displacement_Auto1"][1]
+    assert abs(ours["contact_force"]) == pytest.approx(abs(press), rel=1e-3)
+
+
+@pytest.mark.slow
+def test_press_fit_2d_goes_past_where_the_reference_gives_up() -> None:
+    """The reference stops at t = 0.6415 (UpdatedLagrangian element 57 inverted); ours goes on."""
+    fixture = _fixture("press_fit_2d")
+    assert fixture["failure"] is not None and "INVERTED" in " ".join(fixture["failure"]["message"])
+    until = 0.66
+    history, _, failure = _ours("press_fit_2d", until)
+    assert failure is None and all(step["converged"] for step in history)
+    assert history[-1]["time"] == pytest.approx(until)
+
+
+@pytest.mark.parametrize(
+    "name", ["cylinders_vertical", "cylinders_horizontal_1", "cylinders_horizontal_2"]
+)
+def test_reference_reactions_do_not_balance_before_contact(name: str) -> None:
+    """Why the reactions before contact are not compared: the reference's are not in balance.
+
+    Before the first contact the upper cylinder moves freely under its imposed displacement and
+    nothing else loads either body, so every reaction must vanish (ours: at most 22, 3e-6 of the
+    model's reaction scale, checked in ``compare``). The reference holds a constant force on the
+    imposed support that nothing balances: 5.0e3 (vertical), 2.2e5 (horizontal 1 and 2), 2e-4 to
+    3e-2 of the scale; on horizontal 2 it stays in the contact phase (the 1.6e-2 tolerance).
+    """
+    fixture = _fixture(name)
+    first = fixture["snapshots"][0]
+    assert first["active"] == 0
+    assert max(abs(value) for value in _imbalance(first)) > 1e-4 * reaction_scale(fixture)
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(
+    strict=True,
+    raises=AssertionError,
+    reason="ours stops at t = 0.0512 (step cutting gave up) where the reference reaches 0.32",
+)
+def test_cylinders_horizontal_2_frictional_reaches_the_reference() -> None:
+    """Horizontal 2, frictional (mu = 1), dynamic (Bossak), time step 0.04.
+
+    The reference does not converge its step 1 (20 iterations, 1 active node; not compared) and
+    converges steps 2-8 (t = 0.08 ... 0.32, 4-12 iterations each, 11-20 active nodes). Ours
+    converges step 1 with no active node, meets an inverted tetrahedron in step 2 and cuts it,
+    and the cut gives up at t = 0.0512 (sub-steps of 4e-5 whose slip does not converge): 37 s of
+    CPU. Ours is not shown right here, so this is a strict xfail on reaching the reference's
+    converged t = 0.08 and 0.12; the tolerances are those of the frictionless horizontal 2,
+    doubled for the friction, to be measured when ours gets there.
+    """
+    compare("cylinders_horizontal_2_frictional", 0.12, _tolerances(4e-3, 5e-2, 1, 2e-2, 2e-2))
+
+
+def test_double_arch_frictional_converges_the_step_where_the_reference_stops() -> None:
+    """The frictional double arch: the reference stops in step 1 ("CONTACT LOST", ensure_contact).
+
+    Nothing of the reference to compare with. Ours converges step 1 with the arches in contact.
+    """
+    fixture = _fixture("double_arch_frictional")
+    assert fixture["steps"] == 0 and "CONTACT LOST" in fixture["failure"]["message"][0]
+    history, _, failure = _ours("double_arch_frictional", 0.0005)
+    assert failure is None and len(history) == 1
+    assert history[0]["converged"] and history[0]["active"] > 0
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(
+    strict=True,
+    raises=AssertionError,
+    reason="ours stops at step 2 (t = 0.001): 20 iterations, LM ratio 4.6e-3, slip ratio 4.8e-3",
+)
+def test_double_arch_frictional_runs_as_far_as_the_frictionless_one_is_compared() -> None:
+    """Ours stops at step 2 of the frictional double arch.
+
+    Step 2 does not converge (24 active nodes, 8 slipping): not shown right, so a strict xfail on
+    the five steps the frictionless arch is compared over.
+    """
+    history, _, failure = _ours("double_arch_frictional", 0.0025)
+    assert failure is None and len(history) == 5
