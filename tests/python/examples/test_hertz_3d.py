@@ -49,6 +49,24 @@ def _group(mesh, name: str) -> np.ndarray:
     return found[0]
 
 
+def test_runner_uses_its_own_mesh_script_after_the_2d_runner() -> None:
+    """Each runner meshes with its own folder's script, whatever the process imported before.
+
+    With the 2D runner loaded first (``pytest -m slow``, ``-k converges_with_refinement``), the 3D
+    runner's plain ``import make_mesh`` returned the 2D script: the study wrote a 2D mesh and
+    failed ("line" cells), then passed when rerun alone.
+    """
+    spec = importlib.util.spec_from_file_location(
+        "run_hertz_2d", EXAMPLE.parent / "hertz_2d" / "run_hertz_2d.py"
+    )
+    runner_2d = importlib.util.module_from_spec(spec)
+    assert spec.loader is not None
+    sys.modules[spec.name] = runner_2d
+    spec.loader.exec_module(runner_2d)
+    assert Path(_load("run_hertz_3d").make_mesh.__file__) == EXAMPLE / "make_mesh.py"
+    assert Path(runner_2d.make_mesh.__file__) == EXAMPLE.parent / "hertz_2d" / "make_mesh.py"
+
+
 def test_mesh_script_level_1_counts_jacobians_and_groups() -> None:
     make_mesh = _load("make_mesh")
     mesh = make_mesh.build(1)
