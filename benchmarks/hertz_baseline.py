@@ -7,9 +7,10 @@ DoFs, Newton iterations per step, total wall time and its split into contact sea
 systems, timed separately once per build and multiplied by the number of builds), linear solve,
 output, and the peak resident memory; then the share of search + contact assembly in the total.
 A second table (issue 18) gives, per run, the linear solver and the fill-reducing ordering it used,
-the share of the linear solve in the total, the largest factors (nnz of L + U and UMFPACK's peak
-factor memory), the peak resident memory and the errors of the contact size (a, or b in 2D) and of
-p0 against Hertz theory.
+the share of the linear solve in the total, the CPU seconds of the symbolic analyses (the ordering)
+and of the numeric factorisations with their flop count (independent of the machine's load), the
+largest factors (nnz of L + U and UMFPACK's peak factor memory), the peak resident memory and the
+errors of the contact size (a, or b in 2D) and of p0 against Hertz theory.
 
 Usage: ``python benchmarks/hertz_baseline.py [--example E] [--steps N] [--ordering O[,O...]]
 [levels ...]`` with E = hertz_2d (default) or hertz_3d, levels 1 2 3 by default, ``--steps N``:
@@ -106,6 +107,11 @@ def _measure(
         "factorizations": solver.get("factorizations", 0),
         "max_factor_nonzeros": solver.get("max_factor_nonzeros", 0.0),
         "max_factor_memory_mb": solver.get("max_factor_memory", 0.0) / 2.0**20,
+        "symbolic_analyses": solver.get("symbolic_analyses", 0),
+        "symbolic_cpu_s": solver.get("symbolic_seconds", 0.0),
+        "numeric_cpu_s": solver.get("numeric_seconds", 0.0),
+        "factor_gflop": solver.get("factor_flops", 0.0) / 1e9,
+        "cpu_s": sum(resource.getrusage(resource.RUSAGE_SELF)[:2]),
         "size_error": getattr(hertz, "a_error", getattr(hertz, "b_error", float("nan"))),
         "p0_error": hertz.p0_error,
     }
@@ -163,15 +169,16 @@ def main(argv: list[str]) -> int:
         )
     size = "a" if example == "hertz_3d" else "b"
     print(
-        f"\n{'level':>5} {'DoFs':>7} {'solver':>8} {'ordering':>8} {'total s':>8} {'solve s':>8} "
-        f"{'share':>6} {'factors nnz':>11} {'factor MB':>9} {'peak MB':>8} "
-        f"{size + ' error':>9} {'p0 error':>9}"
+        f"\n{'level':>5} {'DoFs':>7} {'ordering':>8} {'total s':>8} {'solve s':>8} {'share':>6} "
+        f"{'analyses':>8} {'sym CPU':>7} {'num CPU':>7} {'Gflop':>7} {'factors nnz':>11} "
+        f"{'factor MB':>9} {'peak MB':>8} {size + ' error':>9} {'p0 error':>9}"
     )
     for r in rows:
         print(
-            f"{r['level']:>5} {r['dofs_displacement']:>7} {r['linear_solver']:>8} "
-            f"{r['ordering']:>8} {r['total_s']:8.2f} {r['linear_solve_s']:8.2f} "
-            f"{100 * r['linear_solve_s'] / r['total_s']:5.1f}% {r['max_factor_nonzeros']:11.4g} "
+            f"{r['level']:>5} {r['dofs_displacement']:>7} {r['ordering']:>8} {r['total_s']:8.2f} "
+            f"{r['linear_solve_s']:8.2f} {100 * r['linear_solve_s'] / r['total_s']:5.1f}% "
+            f"{r['symbolic_analyses']:>8} {r['symbolic_cpu_s']:7.2f} {r['numeric_cpu_s']:7.2f} "
+            f"{r['factor_gflop']:7.1f} {r['max_factor_nonzeros']:11.4g} "
             f"{r['max_factor_memory_mb']:9.0f} {r['peak_rss_mb']:8.0f} "
             f"{100 * r['size_error']:8.4f}% {100 * r['p0_error']:8.4f}%"
         )

@@ -21,7 +21,7 @@ enum class FillReducingOrdering { Auto, Amd, Metis };
 
 /// Systems with at least this many equations get METIS under "auto" (docs/architecture.md has the
 /// measured crossover on the Hertz examples).
-inline constexpr std::size_t kAutoMetisMinimumSize = 20000;
+inline constexpr std::size_t kAutoMetisMinimumSize = 5000;
 
 /// "auto", "amd" or "metis" → the ordering. @throws InputError naming linear_solver_settings.ordering.
 FillReducingOrdering ParseFillReducingOrdering(const std::string& name);
