@@ -415,7 +415,9 @@ void MPC_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) 
         result = ComputeExplicitMortarContribution<TDim, TNS, TNM, double, double>(integrator, x1, center, x2,
                                                                                    normals, options);
     }
-    if (result.isolated) return Set(ISOLATED, true);
+    // Decided afresh at every pass, as for the other mortar pairs: a pair kept from step to step may come to overlap.
+    Set(ISOLATED, result.isolated);
+    if (result.isolated) return;
     for (int j = 0; j < TNS; ++j) {
         slave[j].FastGetSolutionStepValue(WEIGHTED_GAP) += result.weighted_gap[j];
         slave[j].SetValue(NODAL_AREA, slave[j].GetValue(NODAL_AREA) + result.nodal_area[j]);

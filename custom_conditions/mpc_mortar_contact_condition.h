@@ -77,7 +77,7 @@ public:
     void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
     void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
     /// Adds the pair's weighted gap to the historical WEIGHTED_GAP, D_jj to NODAL_AREA (dual only) and, if
-    /// Is(SLIP), the weighted slip (previous operators) to the historical WEIGHTED_SLIP (or flags ISOLATED).
+    /// Is(SLIP), the weighted slip (previous operators) to the historical WEIGHTED_SLIP; sets ISOLATED afresh.
     void AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) override;
     void CalculateOnIntegrationPoints(const Variable<double>& rVariable, std::vector<double>& rOutput,
                                       const ProcessInfo& rCurrentProcessInfo) override;

@@ -214,3 +214,30 @@ def test_sliding_block_keeps_its_whole_nodal_area(mortar_type: str, tmp_path: Pa
         assert pressure.min() > 0.0, f"step {step}"
     # Sliding leaves the pressure field as smooth as pressing did.
     assert max(ratios) < 1.2 * ratios[0]
+
+
+def test_sliding_block_on_the_mpc_route_keeps_its_whole_nodal_area(tmp_path: Path) -> None:
+    """The multipoint-constraint pairs decide ISOLATED afresh too: NODAL_AREA scales their gap."""
+    _write_case(tmp_path)
+    parameters = _parameters(tmp_path, "ALMContactFrictionless")
+    solver = parameters["solver_settings"]
+    del solver["contact_settings"]
+    solver["mpc_contact_settings"] = {"contact_type": "Frictionless"}
+    solver["convergence_criterion"] = "residual_criterion"
+    process = parameters["processes"]["contact_process_list"][0]
+    process["python_module"] = "mpc_contact_process"
+    process["Parameters"]["contact_type"] = "Frictionless"
+    analysis = _Recording(
+        ca.Model(), Parameters(json.dumps(parameters)), reporter=Reporter(quiet=True)
+    )
+    analysis.Run()
+    assert all(step.converged for step in analysis.reporter.steps)
+
+    first = analysis.records[0]["isolated"]
+    last = analysis.records[-1]["isolated"]
+    assert [pair for pair, flag in first.items() if flag and last.get(pair) is False]
+    for step, record in enumerate(analysis.records, start=1):
+        nodes = record["nodes"]
+        assert all(active for *_, active in nodes.values()), f"step {step}: inactive slave nodes"
+        area_error = max(abs(area - full) / full for area, full, *_ in nodes.values())
+        assert area_error < 1.0e-4, f"step {step}: NODAL_AREA vs tributary area {area_error:.1e}"
