@@ -98,6 +98,12 @@ def base_defaults(interface_key: str, property_key: str) -> dict[str, Any]:
     }
 
 
+def _id_list(ids: list[int], limit: int = 20) -> str:
+    """``"5, 6, 7"``; beyond ``limit`` ids the first ones and ``"... (n more)"``."""
+    shown = ", ".join(str(i) for i in ids[:limit])
+    return shown + (f", ... ({len(ids) - limit} more)" if len(ids) > limit else "")
+
+
 class SearchBaseProcess(Process):
     """Interface preparation and pair search shared by the contact processes.
 
@@ -254,10 +260,7 @@ class SearchBaseProcess(Process):
             for key in self.pairs:
                 self._generate_pair(key)
         _core.FindNodalHProcess(main).Execute()
-        _core.NormalCheckProcess(
-            self.contact_model_part,
-            length_proportion=self.settings["normal_check_proportion"].GetDouble(),
-        ).Execute()
+        self._check_normals()
         self._initialize_process_info()
         if not self.preprocess:
             _core.MasterSlaveProcess(self.contact_model_part).Execute()
@@ -275,6 +278,43 @@ class SearchBaseProcess(Process):
         self._initialize_search_conditions()
         for search in self.searches.values():
             search.ExecuteInitialize()
+
+    def _check_normals(self) -> None:
+        """Flip the interface faces whose normal points into their own body, naming them.
+
+        NormalCheckProcess rebuilds such a face with its node order reversed and marks it MARKER.
+        The searches read MARKER on a face as "owned by another search" and would then work on a
+        clone with a new id, leaving the flipped face twice in the Contact part: the mark is
+        cleared again (a face marked before, by the search of another contact process, keeps it).
+        """
+        conditions = self.contact_model_part.Conditions
+        marked = {condition.Id for condition in conditions if condition.Is(ca.MARKER)}
+        check = _core.NormalCheckProcess(
+            self.contact_model_part,
+            length_proportion=self.settings["normal_check_proportion"].GetDouble(),
+        )
+        check.Execute()
+        if check.NumberOfFlippedConditions() == 0:
+            return
+        flipped = []
+        for condition in self.contact_model_part.Conditions:
+            if condition.Is(ca.MARKER) and condition.Id not in marked:
+                condition.Set(ca.MARKER, False)
+                flipped.append(condition.Id)
+        flipped_set = set(flipped)
+        where = []
+        for parts in self.interface_parts.values():
+            for part in parts:
+                ids = sorted(c.Id for c in part.Conditions if c.Id in flipped_set)
+                if ids:
+                    where.append(f"{part.FullName()}: {_id_list(ids)}")
+        logger.warning(
+            "%s: %d interface condition(s) had their normal pointing into their own body "
+            "(inverted node order) and were flipped: %s",
+            self.process_name,
+            check.NumberOfFlippedConditions(),
+            "; ".join(where) or _id_list(sorted(flipped)),
+        )
 
     def _resume_from_restart(self) -> None:
         """After a restart: attach to the Contact parts, pairs and nodal values of the restart file.
