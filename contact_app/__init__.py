@@ -6,7 +6,12 @@ registered variable (``DISPLACEMENT``, ``WEIGHTED_GAP``, ...) and flag (``ACTIVE
 as a module attribute.
 """
 
+# ruff: noqa: F401  (the core names are imported to be re-exported: ``__all__`` is made from them)
+
 from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
 
 from . import _core
 from ._core import (
@@ -103,98 +108,6 @@ from ._core import (
 
 __version__ = "0.1.0"
 
-__all__ = [
-    "AALMAdaptPenaltyValueProcess",
-    "ALMFastInit",
-    "ALMVariablesCalculationProcess",
-    "ActiveSetUtilities",
-    "ComputeDynamicFactorProcess",
-    "ContactUtilities",
-    "FindNodalHProcess",
-    "InterfacePreprocessCondition",
-    "MasterSlaveProcess",
-    "NormalCheckProcess",
-    "AndCriteria",
-    "BuilderAndSolver",
-    "CompositeCriteria",
-    "ConvergenceCriteria",
-    "CreateLinearSolver",
-    "DisplacementCriteria",
-    "LineSearchStrategy",
-    "LinearSolver",
-    "OrCriteria",
-    "ResidualBasedBlockBuilderAndSolver",
-    "ResidualBasedBossakDisplacementScheme",
-    "ResidualBasedEliminationBuilderAndSolver",
-    "ResidualBasedIncrementalUpdateStaticScheme",
-    "ResidualBasedLinearStrategy",
-    "ResidualBasedNewmarkDisplacementScheme",
-    "ResidualBasedNewtonRaphsonStrategy",
-    "ResidualCriteria",
-    "ResolveLinearSolverName",
-    "Scheme",
-    "SolvingStrategy",
-    "registered_linear_solvers",
-    "Array1DVariable3",
-    "BoolVariable",
-    "Condition",
-    "ConstitutiveLaw",
-    "ConstitutiveLawVariable",
-    "ConditionsArray",
-    "ContactSearchProcess",
-    "ContactSearchSettings",
-    "ConfigurationError",
-    "ConvergenceError",
-    "Dof",
-    "DoubleVariable",
-    "Element",
-    "ElementsArray",
-    "Flags",
-    "Geometry",
-    "InputError",
-    "IntegerVariable",
-    "InternalError",
-    "InvertedElementError",
-    "MasterSlaveConstraint",
-    "MasterSlaveConstraintsArray",
-    "MatrixVariable",
-    "MPCContactSearchProcess",
-    "MixedGenericCriteria",
-    "Model",
-    "ModelPart",
-    "ModelPartIO",
-    "Node",
-    "NodesArray",
-    "ProcessInfo",
-    "Properties",
-    "PropertiesArray",
-    "StringVariable",
-    "Table",
-    "VariableData",
-    "VariableUtils",
-    "VectorVariable",
-    "create_constitutive_law",
-    "create_geometry",
-    "get_flag",
-    "get_variable",
-    "registered_conditions",
-    "registered_constitutive_laws",
-    "registered_constraints",
-    "registered_elements",
-    "registered_flags",
-    "registered_geometries",
-    "registered_variables",
-    "BaseMortarConvergenceCriteria",
-    "ContactBlockMeasure",
-    "ContactCriteriaTolerances",
-    "DisplacementLagrangeMultiplierContactCriteria",
-    "MixedULMLinearSolver",
-    "ResidualBasedNewtonRaphsonContactStrategy",
-    "LineSearchContactStrategy",
-    "ResidualBasedNewtonRaphsonMPCContactStrategy",
-    "MPCContactCriteria",
-]
-
 
 def _export_registered_names() -> list[str]:
     """Copy every registered variable and flag of the core into this module; return their names."""
@@ -205,8 +118,30 @@ def _export_registered_names() -> list[str]:
     return names
 
 
+# The public names are written once, in the import list above: every module-level name bound to
+# the core's object of the same name, then the registered variables and flags, then ``analysis``.
+__all__ = [
+    name
+    for name, value in globals().items()
+    if not name.startswith("_") and getattr(_core, name, None) is value
+]
 __all__ += _export_registered_names()
-
-from . import analysis  # noqa: E402  (needs the names above: it imports contact_app itself)
-
 __all__ += ["analysis"]
+
+if TYPE_CHECKING:
+    from . import analysis
+
+
+def __getattr__(name: str) -> Any:
+    """Import ``contact_app.analysis`` on first use (it imports this package, and numpy).
+
+    The analysis driver sits above the package: importing it eagerly here was the only upward
+    import, and cost every ``import contact_app`` the driver's import time.
+    """
+    if name == "analysis":
+        return importlib.import_module(f"{__name__}.analysis")
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), "analysis"})
