@@ -12,6 +12,7 @@ from collections.abc import Callable
 from typing import Any
 
 import contact_app as ca
+from contact_app.analysis.paths import PathResolver
 from contact_app.analysis.solvers.convergence_criteria_factory import (
     CONTACT_CRITERIA,
     STRUCTURAL_CRITERIA,
@@ -81,6 +82,13 @@ CONTACT_SETTINGS_DEFAULTS: dict[str, Any] = {
     "use_mixed_ulm_solver": True,
     "mixed_ulm_solver_parameters": MIXED_ULM_DEFAULTS,
 }
+
+
+#: ``solver_settings`` the contact solvers set to true whatever the file says. The contact search
+#: creates and removes pairs between steps, and with them the multiplier DoFs of the slave nodes, so
+#: the builder must rebuild the DoF set every step (``reform_dofs_at_each_step``) and the strategy
+#: must drop the system it stored for the previous DoF set (``clear_storage``).
+FORCED_SOLVER_SETTINGS = ("reform_dofs_at_each_step", "clear_storage")
 
 
 def mortar_variables(mortar_type: str) -> list[Any]:
@@ -181,6 +189,20 @@ class ContactSolverMixin:
     main_model_part: ca.ModelPart
     settings: Parameters
 
+    def __init__(
+        self, model: ca.Model, custom_settings: Parameters, paths: PathResolver | None = None
+    ) -> None:
+        # The keys of FORCED_SOLVER_SETTINGS the user set to false, read before the defaults
+        # fill in the missing ones (a key left out is forced without a word).
+        self._forced_false_keys = [
+            key
+            for key in FORCED_SOLVER_SETTINGS
+            if custom_settings.Has(key)
+            and custom_settings[key].IsBool()
+            and not custom_settings[key].GetBool()
+        ]
+        super().__init__(model, custom_settings, paths)  # type: ignore[call-arg]
+
     @classmethod
     def GetDefaultParameters(cls) -> dict[str, Any]:
         """The structural defaults plus ``contact_settings``."""
@@ -196,8 +218,16 @@ class ContactSolverMixin:
         self.mortar_type = check_mortar_type(contact)
         # split_factor, max_number_splits, ... were range-checked by the defaults validation.
         # Pairs appear and disappear between steps: the DoF set is rebuilt every step.
-        self.settings["reform_dofs_at_each_step"].SetBool(True)
-        self.settings["clear_storage"].SetBool(True)
+        if self._forced_false_keys:
+            logger.warning(
+                "%s › %s: false overridden with true, as the contact solvers require: the contact "
+                "pairs, and with them the Lagrange multiplier DoFs, change between steps, so the "
+                "DoF set is rebuilt and the stored system cleared at every step",
+                self.settings.Where(),
+                " and ".join(self._forced_false_keys),
+            )
+        for key in FORCED_SOLVER_SETTINGS:
+            self.settings[key].SetBool(True)
         super().ValidateSettings()  # type: ignore[misc]
 
     def StepCuttingSettings(self) -> tuple[float, int] | None:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import logging
 from pathlib import Path
 
 import pytest
@@ -102,3 +103,56 @@ def test_components_use_the_condensing_solver() -> None:
     assert isinstance(solver, ca.MixedULMLinearSolver)
     assert solver.LastSolveWasCondensed()
     assert solver.LastCondensedMultipliers() > 0
+
+
+def _solver_settings(forced: dict[str, bool]) -> Parameters:
+    """The Taylor patch test's solver settings with the forced keys removed, then ``forced``."""
+    settings = Parameters.from_file(CASES_DIR / f"{TAYLOR}_parameters.json")["solver_settings"]
+    for key in ("reform_dofs_at_each_step", "clear_storage"):
+        settings.RemoveValue(key)
+    for key, value in forced.items():
+        settings.AddValue(key, value)
+    return settings
+
+
+@pytest.mark.parametrize(
+    ("forced", "named"),
+    [
+        (
+            {"reform_dofs_at_each_step": False, "clear_storage": False},
+            ["reform_dofs_at_each_step", "clear_storage"],
+        ),
+        ({"reform_dofs_at_each_step": False}, ["reform_dofs_at_each_step"]),
+        ({"clear_storage": False, "reform_dofs_at_each_step": True}, ["clear_storage"]),
+        ({"reform_dofs_at_each_step": True, "clear_storage": True}, []),
+        ({}, []),
+    ],
+    ids=["both_false", "reform_false", "clear_false", "both_true", "not_given"],
+)
+def test_forced_dof_settings_warn_only_when_the_user_said_false(
+    forced: dict[str, bool], named: list[str], caplog: pytest.LogCaptureFixture
+) -> None:
+    from contact_app.analysis.paths import PathResolver
+    from contact_app.analysis.solvers.solver_wrapper import CreateSolverByParameters
+
+    settings = _solver_settings(forced)
+    with caplog.at_level(logging.WARNING, logger="contact_app"):
+        CreateSolverByParameters(ca.Model(), settings, paths=PathResolver(CASES_DIR))
+    # The contact pairs change the DoF set between steps: both are true whatever the file said.
+    assert settings["reform_dofs_at_each_step"].GetBool()
+    assert settings["clear_storage"].GetBool()
+    # The case file's legacy keys (block_builder, line_search) have warnings of their own.
+    warnings = [
+        r.getMessage()
+        for r in caplog.records
+        if r.levelno >= logging.WARNING
+        and ("reform_dofs_at_each_step" in r.getMessage() or "clear_storage" in r.getMessage())
+    ]
+    if not named:
+        assert warnings == []
+        return
+    assert len(warnings) == 1
+    message = warnings[0]
+    assert "solver_settings" in message and "change between steps" in message
+    for key in ("reform_dofs_at_each_step", "clear_storage"):
+        assert (key in message) == (key in named)
