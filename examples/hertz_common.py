@@ -1,7 +1,8 @@
 """What the Hertz and Cattaneo-Mindlin examples share: meshing, width estimates, E*, settings.
 
 Mesh grading and gmsh groups, the contact width estimates, E*, loading a folder's script by path
-and the contact process settings.
+and the contact process settings; for the Hertz runners also the run, the pressure plot and the
+command line.
 
 Both examples measure an elliptic pressure profile p(c) = p0 sqrt(1 - c^2/w^2) (c = x in 2D, the
 radius r in 3D; w = b or a) two ways: a least-squares fit of p^2 against c^2, and the second
@@ -12,14 +13,17 @@ depend on where the contact edge falls between two nodes.
 
 from __future__ import annotations
 
+import argparse
 import contextlib
 import importlib.util
 import json
 import math
 import os
 import sys
-from collections.abc import Iterator
+import time
+from collections.abc import Callable, Iterator
 from pathlib import Path
+from typing import Any
 
 import meshio
 import numpy as np
@@ -171,3 +175,118 @@ def contact_parameters(parameters: dict) -> dict:
 def friction_coefficient(parameters: dict) -> float:
     """Mu of the pair "0" of the contact process."""
     return float(contact_parameters(parameters)["friction_coefficients"]["0"])
+
+
+def run_example(
+    workdir: Path,
+    refinement: int | None,
+    mesh: str,
+    default_refinement: int,
+    write_mesh: Callable[[Path, int], object],
+    example_dir: Path,
+    analyse: Callable[[Path], Any],
+    evaluate: Callable[[Any, Path], Any],
+) -> Any:
+    """Run an example in ``workdir`` and evaluate it; the result gets its refinement and time.
+
+    The mesh ``mesh`` is written there at level ``refinement``, or at ``default_refinement`` when
+    ``refinement`` is None and no mesh exists; otherwise the existing mesh is used. ``analyse``
+    runs the analysis of a ProjectParameters.json in the working folder and returns it;
+    ``evaluate(analysis, materials)`` makes the result.
+    """
+    workdir = Path(workdir).resolve()
+    path = workdir / mesh
+    if refinement is None and not path.exists():
+        refinement = default_refinement
+    if refinement is not None:
+        write_mesh(path, refinement)
+    parameters, materials = example_inputs(workdir, example_dir)
+    with working_directory(workdir):
+        start = time.perf_counter()
+        analysis = analyse(parameters)
+        elapsed = time.perf_counter() - start
+    result = evaluate(analysis, materials)
+    result.refinement = refinement  # None: an existing mesh of unknown level was reused
+    result.wall_time = elapsed
+    return result
+
+
+def elliptic_profile(p0: float, width: float, c: np.ndarray) -> np.ndarray:
+    """p0 sqrt(1 - c^2/w^2), zero beyond w."""
+    return p0 * np.sqrt(np.clip(1.0 - (c / width) ** 2, 0.0, None))
+
+
+def plot_elliptic_profile(axis: Any, p0: float, width: float, style: str, label: str) -> None:
+    """Draw p0 sqrt(1 - c^2/w^2) over [0, w] (w = ``width``) on ``axis``."""
+    curve = np.linspace(0.0, width, 400)
+    axis.plot(curve, elliptic_profile(p0, width, curve), style, label=label)
+
+
+def plot_pressure(
+    path: Path,
+    result: Any,
+    width: float,
+    draw_estimates: Callable[[Any], None],
+    xlabel: str,
+    title: str,
+    **legend: Any,
+) -> None:
+    """Contact pressure of the slave nodes up to 2 w (w = ``width``, the analytic one).
+
+    Draws the analytic profile of ``result.p0_analytic`` over ``width``, then
+    ``draw_estimates(axis)`` (the measured profiles), then the active and inactive nodes of
+    ``result.profile``; ``legend`` goes to the legend.
+    """
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    c_max = 2.0 * width
+    shown = [(c, p, a) for c, p, a in result.profile if c <= c_max]
+    fig, axis = plt.subplots(figsize=(7.0, 4.5))
+    plot_elliptic_profile(axis, result.p0_analytic, width, "k-", "Hertz (analytic)")
+    draw_estimates(axis)
+    axis.plot([c for c, _, a in shown if a], [p for _, p, a in shown if a], "C1o", label="active")
+    axis.plot(
+        [c for c, _, a in shown if not a],
+        [p for _, p, a in shown if not a],
+        "C2x",
+        label="inactive",
+    )
+    axis.set_xlabel(xlabel)
+    axis.set_ylabel("contact pressure (MPa)")
+    axis.set_title(title)
+    axis.set_xlim(0.0, c_max)
+    axis.set_ylim(bottom=0.0)
+    axis.grid(True, alpha=0.3)
+    axis.legend(**legend)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+def example_main(
+    argv: list[str] | None,
+    description: str,
+    run: Callable[..., Any],
+    summary: Callable[[Any], str],
+    plot: Callable[[Any, Path], None],
+    summary_name: str,
+    plot_name: str,
+) -> int:
+    """Run, write the plot and the summary, print the summary; 1 if a step did not converge."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument(
+        "--refinement", type=int, help="write the mesh at this level (1 = coarsest)"
+    )
+    parser.add_argument("--quiet", action="store_true", help="no step table")
+    args = parser.parse_args(argv)
+    workdir = Path.cwd()
+    result = run(workdir, args.refinement, quiet=args.quiet)
+    text = summary(result)
+    (workdir / summary_name).write_text(text + "\n", encoding="utf-8")
+    plot(result, workdir / plot_name)
+    print(text)
+    print(f"outputs: {workdir / plot_name}, {workdir / summary_name}, {workdir / 'vtk_output'}")
+    return 0 if result.converged else 1

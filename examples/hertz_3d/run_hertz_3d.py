@@ -20,10 +20,8 @@ Exit code 0 when every step converged, 1 otherwise.
 
 from __future__ import annotations
 
-import argparse
 import math
 import sys
-import time
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -38,11 +36,13 @@ HERE = Path(__file__).resolve().parent
 sys.path[:0] = [str(HERE), str(HERE.parent)]
 from hertz_common import (  # noqa: E402  (examples/hertz_common.py)
     effective_modulus,
-    example_inputs,
+    example_main,
     fit_elliptic_profile,
     load_script,
+    plot_elliptic_profile,
+    plot_pressure,
+    run_example,
     second_moment_width,
-    working_directory,
 )
 
 # Under a name of its own: a plain `import make_mesh` returns whichever example's mesh script the
@@ -209,15 +209,8 @@ def run(workdir: Path, refinement: int | None = None, quiet: bool = True) -> Her
     The mesh is written there at level ``refinement``, or at DEFAULT_REFINEMENT when
     ``refinement`` is None and no mesh exists; otherwise the existing mesh is used.
     """
-    workdir = Path(workdir).resolve()
-    mesh = workdir / MESH
-    if refinement is None and not mesh.exists():
-        refinement = DEFAULT_REFINEMENT
-    if refinement is not None:
-        make_mesh.write_mesh(mesh, refinement)
-    parameters, materials = example_inputs(workdir, HERE)
-    with working_directory(workdir):
-        start = time.perf_counter()
+
+    def analyse(parameters: Path) -> RecordingAnalysis:
         analysis = RecordingAnalysis(
             ca.Model(),
             Parameters.from_file(parameters),
@@ -228,11 +221,11 @@ def run(workdir: Path, refinement: int | None = None, quiet: bool = True) -> Her
             stop_on_non_convergence=False,
         )
         analysis.Run()
-        elapsed = time.perf_counter() - start
-    result = evaluate(analysis, materials)
-    result.refinement = refinement  # None: an existing mesh of unknown level was reused
-    result.wall_time = elapsed
-    return result
+        return analysis
+
+    return run_example(
+        workdir, refinement, MESH, DEFAULT_REFINEMENT, make_mesh.write_mesh, HERE, analyse, evaluate
+    )
 
 
 def summary(result: HertzResult) -> str:
@@ -264,79 +257,30 @@ def summary(result: HertzResult) -> str:
     return "\n".join(lines)
 
 
-def _profile(p0: float, a: float, r: np.ndarray) -> np.ndarray:
-    return p0 * np.sqrt(np.clip(1.0 - (r / a) ** 2, 0.0, None))
-
-
 def plot(result: HertzResult, path: Path) -> None:
     """Contact pressure on the slave nodes vs r, with the analytic and the fitted profiles."""
-    import matplotlib
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    def estimates(axis) -> None:
+        if result.a > 0.0:
+            moment = f"moment: a = {result.a:.4g}, p0 = 3F/(2πa²) = {result.p0:.4g}"
+            plot_elliptic_profile(axis, result.p0, result.a, "C3:", moment)
+            fit = f"fit: a = {result.a_fit:.4g}, p0 = {result.p0_fit:.4g}"
+            plot_elliptic_profile(axis, result.p0_fit, result.a_fit, "C0--", fit)
 
-    r_max = 2.0 * result.a_analytic
-    shown = [(r, p, a) for r, p, a in result.profile if r <= r_max]
-    fig, axis = plt.subplots(figsize=(7.0, 4.5))
-    curve = np.linspace(0.0, result.a_analytic, 400)
-    axis.plot(
-        curve,
-        _profile(result.p0_analytic, result.a_analytic, curve),
-        "k-",
-        label="Hertz (analytic)",
+    plot_pressure(
+        path,
+        result,
+        result.a_analytic,
+        estimates,
+        "r, distance from the contact axis (mm)",
+        f"3D Hertz: a error {100 * result.a_error:.2f} %, p0 error {100 * result.p0_error:.2f} %",
+        fontsize="small",
     )
-    if result.a > 0.0:
-        curve = np.linspace(0.0, result.a, 400)
-        axis.plot(
-            curve,
-            _profile(result.p0, result.a, curve),
-            "C3:",
-            label=f"moment: a = {result.a:.4g}, p0 = 3F/(2πa²) = {result.p0:.4g}",
-        )
-        curve = np.linspace(0.0, result.a_fit, 400)
-        axis.plot(
-            curve,
-            _profile(result.p0_fit, result.a_fit, curve),
-            "C0--",
-            label=f"fit: a = {result.a_fit:.4g}, p0 = {result.p0_fit:.4g}",
-        )
-    axis.plot([r for r, _, a in shown if a], [p for _, p, a in shown if a], "C1o", label="active")
-    axis.plot(
-        [r for r, _, a in shown if not a],
-        [p for _, p, a in shown if not a],
-        "C2x",
-        label="inactive",
-    )
-    axis.set_xlabel("r, distance from the contact axis (mm)")
-    axis.set_ylabel("contact pressure (MPa)")
-    axis.set_title(
-        f"3D Hertz: a error {100 * result.a_error:.2f} %, p0 error {100 * result.p0_error:.2f} %"
-    )
-    axis.set_xlim(0.0, r_max)
-    axis.set_ylim(bottom=0.0)
-    axis.grid(True, alpha=0.3)
-    axis.legend(fontsize="small")
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
 
 
 def main(argv: list[str] | None = None) -> int:
     """Run, write the plot and the summary, print the summary; 1 if a step did not converge."""
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument(
-        "--refinement", type=int, help="write the mesh at this level (1 = coarsest)"
-    )
-    parser.add_argument("--quiet", action="store_true", help="no step table")
-    args = parser.parse_args(argv)
-    workdir = Path.cwd()
-    result = run(workdir, args.refinement, quiet=args.quiet)
-    text = summary(result)
-    (workdir / SUMMARY).write_text(text + "\n", encoding="utf-8")
-    plot(result, workdir / PLOT)
-    print(text)
-    print(f"outputs: {workdir / PLOT}, {workdir / SUMMARY}, {workdir / 'vtk_output'}")
-    return 0 if result.converged else 1
+    return example_main(argv, __doc__.splitlines()[0], run, summary, plot, SUMMARY, PLOT)
 
 
 if __name__ == "__main__":
