@@ -214,9 +214,14 @@ CASES: dict[str, list[tuple[float, bool, dict[str, float]]]] = {
     # reference's second support): reactions 7.1e-2, pressure 6.8 % (the same ratio: the
     # reference's contact force equals its unbalanced first reaction); displacement 7.3e-3.
     "hyperelastic_tubes": [(0.05, False, _tolerances(1.5e-2, 0.1, 0, 0.1, 0.1))],
-    # Steps 1-5 (the reference's steps 6-8 stop unconverged at 20 iterations): 1.1e-4, 1.1e-3, 0,
-    # 1.5e-3, 1.7e-4; 24 active nodes.
-    "double_arch": [(0.0025, False, _tolerances(3e-4, 3e-3, 0, 5e-3, 1e-3))],
+    # Steps 1-5 (the reference's steps 6-8 stop unconverged at 20 iterations): 1.1e-4, 1.1e-3 or
+    # 1.13e-2, 0, 1.5e-3, 1.7e-4; 24 active nodes. The reactions are converged only to the model's
+    # residual ratio 1e-4 of a first residual that holds the penalty forces: the two mirror
+    # supports DISPLACEMENT_Auto1/Auto2 carry y 4645.83 / -4854.89 in the reference at t = 0.0025,
+    # and 4645.93 / -4645.93 in ours converged to 1e-9 (either ordering). With the model's own
+    # tolerances ours lands on -4857.19 (AMD ordering) or -4645.93 (METIS): 1.2e-3 or 1.13e-2 of
+    # the scale from the reference, whose second support is the unconverged one.
+    "double_arch": [(0.0025, False, _tolerances(3e-4, 1.5e-2, 0, 5e-3, 1e-3))],
 }
 
 
