@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_conditions/alm_frictional_mortar_contact_condition.h"
+#include "custom_utilities/active_set_utilities.h"
 
 namespace contact_app {
 namespace {
@@ -36,7 +37,7 @@ void AddALMFrictionalResidual(const TState& s, double k, const FrictionalParamet
         lambda_row = n * (k * gap);
         if (p.slip[j]) {  // Coulomb slip, weighted by ω_j so that the pairs assemble the nodal law exactly
             const T augmented_normal = k * lambda_n + eps * nodal.TransmittedGap(j, gap);
-            const Vec trial = (p_lambda * k + nodal.Slip(j, pair_slip) * (p.tangent_factor * eps))
+            const Vec trial = (p_lambda * k + nodal.Slip(j, pair_slip) * (ActiveSetUtilities::SlipTrialFactor(p.tangent_factor) * eps))
                                   .cwiseProduct(p.free_components.row(j).transpose().template cast<T>());
             const Vec direction = SlipDirection<T, TDim, TNS>(trial, p, j, std::abs(Value(augmented_normal)) + 1e-300);
             const Vec traction = p_lambda * k + direction * (p.mu[j] * augmented_normal);

@@ -162,7 +162,7 @@ Array3 TrialTangentialTraction(const Node& node, const ProcessInfo& process_info
     } else {
         slip = ContactUtilities::TransmittedWeightedSlip(node) + node.GetValue(TANGENT_SLIP);
     }
-    Array3 trial = tangent_factor * penalty * tangential(slip);
+    Array3 trial = (with_multiplier ? SlipTrialFactor(tangent_factor) : tangent_factor) * penalty * tangential(slip);
     if (with_multiplier) {
         trial += process_info.GetValue(SCALE_FACTOR) * tangential(node.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER));
         // A held multiplier component carries no traction (a symmetry plane, docs/theory/mortar.md §8).

@@ -33,7 +33,15 @@ namespace ActiveSetUtilities {
 /// μ|λ̄n| / max_j μ|λ̄n,j| of the largest friction bound (a node without friction may turn freely).
 inline constexpr double kSlipDirectionTolerance = 1e-4;
 
-/// The trial tangential traction of a slave node: λ̄τ = k Pλ + κ ε P ũτ (ALM, @p with_multiplier) or
+/// The factor c_t/ε of the ALM slip law's trial λ̄τ = k Pλ + c_t P ũτ: max(κ, 1). κ (TANGENT_FACTOR) is the ratio of
+/// the stick penalty to the normal one; the slip law only needs the direction of λ̄τ, and a converged slip state does
+/// not depend on c_t > 0, but with c_t = κε small (the users' models run κ = 0.025) a slowly slipping node's direction
+/// equation is stiff only over rotations θ ≲ √(2 c_t|ũτ| / μ|λ̄n|) and Newton over-rotates (docs/theory/mortar.md §8).
+inline double SlipTrialFactor(double tangent_factor) {
+    return tangent_factor > 1.0 ? tangent_factor : 1.0;
+}
+
+/// The trial tangential traction of a slave node: λ̄τ = k Pλ + max(κ, 1) ε P ũτ (ALM, @p with_multiplier) or
 /// κ ε P(ũτ + e) (penalty, e = TANGENT_SLIP the elastic weighted slip carried over from earlier steps).
 Array3 TrialTangentialTraction(const Node& node, const ProcessInfo& process_info, bool with_multiplier);
 

@@ -379,3 +379,26 @@ def test_double_arch_frictional_runs_as_far_as_the_frictionless_one_is_compared(
     """
     history, _, failure = _ours("double_arch_frictional", 0.0025)
     assert failure is None and len(history) == 5
+
+
+@pytest.mark.slow
+def test_cylinders_horizontal_2_frictional_slides_at_a_smaller_step() -> None:
+    """Horizontal 2, frictional, at time step 0.004 to t = 0.06: every step converges.
+
+    Contact starts at t = 0.04. With the slip law's trial constant c_t = kappa eps (kappa = 0.025
+    here) step 11 stopped at 20 iterations, the most loaded node's traction turning 6.7 -> 89
+    degrees off its slip; with c_t = max(kappa, 1) eps (docs/theory/mortar.md section 8) steps
+    10-15 converge in 6-12 iterations.
+    """
+    import contact_app as ca
+    from contact_app.analysis import StructuralMechanicsAnalysis
+    from contact_app.analysis.reporting import Reporter
+
+    raw = common.prepared_parameters("cylinders_horizontal_2_frictional", end_time=0.06)
+    raw["solver_settings"]["time_stepping"] = {"time_step": 0.004}
+    analysis = StructuralMechanicsAnalysis(ca.Model(), raw, reporter=Reporter(quiet=True))
+    analysis.Run()
+    steps = analysis.reporter.steps
+    assert len(steps) == 15
+    assert all(step.converged for step in steps)
+    assert max(step.iterations for step in steps) <= 15
