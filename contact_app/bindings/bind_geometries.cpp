@@ -47,7 +47,8 @@ void BindGeometries(py::module_& m) {
     py::enum_<Config>(geometry, "Configuration", "Which node coordinates a mapping uses.")
         .value("Current", Config::Current)
         .value("Initial", Config::Initial);
-    const auto current = py::arg("configuration") = Config::Current;
+    // The default's description is a Python expression (the enum's repr is not), for help() and the stubs.
+    const auto current = py::arg_v("configuration", Config::Current, "Geometry.Configuration.Current");
 
     geometry.def("Name", &Geometry::Name, "Kratos name of the geometry type (\"Quadrilateral2D4\").")
         .def("PointsNumber", &Geometry::PointsNumber, "Number of nodes.")

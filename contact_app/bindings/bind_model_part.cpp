@@ -192,9 +192,8 @@ void DefEntities(ModelPartClass& mp) {
                                "The constraints (MasterSlaveConstraintsArray).");
 }
 
-void BindModel(py::module_& m) {
-    py::class_<Model>(m, "Model", "Owner of the root model parts (Kratos Model).")
-        .def(py::init<>(), "An empty model.")
+void DefModel(py::class_<Model>& model) {
+    model.def(py::init<>(), "An empty model.")
         .def("CreateModelPart", &Model::CreateModelPart, py::arg("name"), py::arg("buffer_size") = 1, kInternal,
              "A new root model part (dotted names create sub model parts).")
         .def("GetModelPart", &Model::GetModelPart, py::arg("name"), kInternal, "A model part by name or dotted path.")
@@ -218,6 +217,9 @@ void BindModelPart(py::module_& m) {
     BindContainer<MasterSlaveConstraint>(m, "MasterSlaveConstraintsArray");
     BindContainer<Properties>(m, "PropertiesArray");
 
+    // Model is registered before ModelPart's methods so that signatures naming it (GetModel) show the
+    // Python name, not the C++ one; its own methods are added after ModelPart exists.
+    py::class_<Model> model(m, "Model", "Owner of the root model parts (Kratos Model).");
     ModelPartClass mp(m, "ModelPart", "A named set of nodes, elements, conditions and properties (Kratos ModelPart).",
                       py::multiple_inheritance());
     DefHierarchy(mp);
@@ -231,7 +233,7 @@ void BindModelPart(py::module_& m) {
             "__repr__", [](const ModelPart& self) { return "<ModelPart " + self.FullName() + ">"; },
             "<ModelPart Full.Name>.");
     DefIdentity(mp);
-    BindModel(m);
+    DefModel(model);
 }
 
 }  // namespace contact_app::bindings

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <pybind11/numpy.h>
 
+#include <tuple>
 #include <unordered_map>
+#include <utility>
 
 #include "contact_app/bindings/binding_helpers.h"
 #include "contact_app/bindings/bindings.h"
@@ -43,7 +45,7 @@ void WithTyped(const VariableData& variable, F&& function) {
 }
 
 /// (values, sizes): the rows padded with zeros to the widest, as an (n, width) float64 array, and each row's length.
-py::tuple PaddedRows(const std::vector<std::vector<double>>& rows) {
+std::pair<py::array_t<double>, py::array_t<std::int64_t>> PaddedRows(const std::vector<std::vector<double>>& rows) {
     std::size_t width = 0;
     for (const auto& row : rows) width = std::max(width, row.size());
     py::array_t<double> values({rows.size(), width});
@@ -54,7 +56,7 @@ py::tuple PaddedRows(const std::vector<std::vector<double>>& rows) {
         s(i) = static_cast<std::int64_t>(rows[i].size());
         for (std::size_t j = 0; j < width; ++j) v(i, j) = j < rows[i].size() ? rows[i][j] : 0.0;
     }
-    return py::make_tuple(values, sizes);
+    return {values, sizes};
 }
 
 /// The nodes of @p ids, looked up in @p part (InputError for an id that is not there).
@@ -229,9 +231,8 @@ void BindBulkArrays(py::module_& m) {
             else if (const auto* v = dynamic_cast<const Variable<Vector>*>(&variable)) collect(*v);
             else if (const auto* v = dynamic_cast<const Variable<Matrix>*>(&variable)) collect(*v);
             else ThrowNotConvertible(variable);
-            py::tuple padded = PaddedRows(rows);
-            return py::make_tuple(padded[0], padded[1],
-                                  py::array_t<std::int64_t>(points.size(), points.data()));
+            auto [values, sizes] = PaddedRows(rows);
+            return std::make_tuple(values, sizes, py::array_t<std::int64_t>(points.size(), points.data()));
         },
         py::arg("model_part"), py::arg("elements"), py::arg("variable"), py::arg("process_info"),
         "(values, sizes, points): per element (or condition) of model_part the values of variable at its integration "
@@ -252,7 +253,8 @@ void BindUtilities(py::module_& m) {
                     node.Coordinates() = node.InitialCoordinates() + node.GetSolutionStepValue(variable, step);
                 }
             },
-            py::arg("nodes"), py::arg("variable") = VariableObject(DISPLACEMENT), py::arg("buffer_step") = 0,
+            py::arg("nodes"), py::arg_v("variable", VariableObject(DISPLACEMENT), "DISPLACEMENT"),
+            py::arg("buffer_step") = 0,
             "Current coordinates = initial + historical variable (DISPLACEMENT) for every node of the iterable.")
         .def(
             "SetFlag",
