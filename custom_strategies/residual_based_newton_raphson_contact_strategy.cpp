@@ -39,6 +39,8 @@ void ResidualBasedNewtonRaphsonContactStrategy::Predict() {
     ComputeExplicitContributions();
 }
 
+void ResidualBasedNewtonRaphsonContactStrategy::PredictUnknowns() { mScheme->PredictPrescribed(mModelPart); }
+
 void ResidualBasedNewtonRaphsonContactStrategy::BeforeReferenceResidual() {
     ComputeExplicitContributions();
 }

@@ -13,7 +13,10 @@ struct ContactStrategySettings {
 
 /// Newton–Raphson for mortar contact (Kratos ResidualBasedNewtonRaphsonContactStrategy,
 /// kratos_cpp_internals.md §8.1, data flow §12).
-/// - Predict: the scheme's prediction, then the contact normals and the weighted gaps (and slips) of the pairs in
+/// - Predict: only what the step prescribes (the scheme's PredictPrescribed: free DoFs stay at the last converged
+///   state, as the reference's contact strategy, which does not call the scheme's predictor; extrapolating a body
+///   about to touch or slide pushes it through the other and can invert the elements next to a driven face), then
+///   the contact normals and the weighted gaps (and slips) of the pairs in
 ///   "ComputingContact" are recomputed at the predicted configuration (the first build and the active-set criteria
 ///   use them; with prescribed displacements the predicted configuration is already the deformed one).
 /// - SolveSolutionStep: with the model part flagged INTERACTION (the default, full semi-smooth Newton) one Newton
@@ -42,6 +45,7 @@ protected:
     /// does this by calling the criteria's InitializeSolutionStep again at that point; without it the whole
     /// step keeps the normals of its start while the mortar operators are integrated on the current surface.
     void BeforeReferenceResidual() override;
+    void PredictUnknowns() override;
     void AfterSolutionUpdate() override;
 
 private:

@@ -54,6 +54,12 @@ void BossakScheme::InitializeSolutionStep(ModelPart& rModelPart, SparseMatrixTyp
 
 void BossakScheme::Predict(ModelPart& rModelPart, DofsArrayType&, SparseMatrixType&, SystemVectorType&,
                            SystemVectorType&) {
+    PredictDisplacements(rModelPart, true);
+}
+
+void BossakScheme::PredictPrescribed(ModelPart& rModelPart) { PredictDisplacements(rModelPart, false); }
+
+void BossakScheme::PredictDisplacements(ModelPart& rModelPart, bool extrapolate_free) {
     const double dt = rModelPart.GetProcessInfo().GetValue(DELTA_TIME);
     ComputeCoefficients(dt);
     const int dimension = Dimension(rModelPart);
@@ -71,7 +77,7 @@ void BossakScheme::Predict(ModelPart& rModelPart, DofsArrayType&, SparseMatrixTy
             } else if (node->IsFixed(*kVelocity[k])) {
                 u[k] = u_n[k] + (v[k] + mC[4] * v_n[k] + mC[5] * a_n[k]) / mC[1];
             } else if (!node->IsFixed(*kDisplacement[k])) {
-                u[k] = u_n[k] + dt * v_n[k] + 0.5 * dt * dt * a_n[k];
+                u[k] = extrapolate_free ? u_n[k] + dt * v_n[k] + 0.5 * dt * dt * a_n[k] : u_n[k];
             }
         }
     }

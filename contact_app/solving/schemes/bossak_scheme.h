@@ -19,6 +19,7 @@ public:
                                 SystemVectorType& rB) override;
     void Predict(ModelPart& rModelPart, DofsArrayType& rDofSet, SparseMatrixType& rA, SystemVectorType& rDx,
                  SystemVectorType& rB) override;
+    void PredictPrescribed(ModelPart& rModelPart) override;
     void Update(ModelPart& rModelPart, DofsArrayType& rDofSet, SparseMatrixType& rA, SystemVectorType& rDx,
                 SystemVectorType& rB) override;
 
@@ -38,6 +39,9 @@ public:
 
 private:
     void ComputeCoefficients(double delta_time);
+    /// Displacements of the new step: prescribed velocities/accelerations integrated, free DoFs extrapolated
+    /// (u_n + Δt v_n + Δt²/2 a_n) or kept at u_n; then the derivatives.
+    void PredictDisplacements(ModelPart& rModelPart, bool extrapolate_free);
     /// v_{n+1}, a_{n+1} of every node from its displacement increment.
     void UpdateDerivatives(ModelPart& rModelPart) const;
     void AddDynamicLHS(Element& rElement, Matrix& rLHS, const ProcessInfo& rProcessInfo);

@@ -43,6 +43,8 @@ void Scheme::FinalizeNonLinIteration(ModelPart& rModelPart, SparseMatrixType&, S
 
 void Scheme::Predict(ModelPart&, DofsArrayType&, SparseMatrixType&, SystemVectorType&, SystemVectorType&) {}
 
+void Scheme::PredictPrescribed(ModelPart&) {}
+
 void Scheme::Update(ModelPart&, DofsArrayType& rDofSet, SparseMatrixType&, SystemVectorType& rDx, SystemVectorType&) {
     for (Dof* dof : rDofSet)
         if (dof->IsFree()) dof->GetSolutionStepValue() += rDx[static_cast<Eigen::Index>(dof->EquationId())];

@@ -35,6 +35,10 @@ public:
     /// Predicts the unknowns of the new step (static: nothing).
     virtual void Predict(ModelPart& rModelPart, DofsArrayType& rDofSet, SparseMatrixType& rA, SystemVectorType& rDx,
                          SystemVectorType& rB);
+    /// Predicts only what the step prescribes (DoFs whose velocity or acceleration is fixed) and keeps every free
+    /// DoF at its last converged value, the derivatives following (static: nothing). The contact strategies predict
+    /// so: extrapolating a body that is about to touch or slide pushes it through the contact surface.
+    virtual void PredictPrescribed(ModelPart& rModelPart);
     /// u += Δx on every free DoF (Δx indexed by equation id).
     virtual void Update(ModelPart& rModelPart, DofsArrayType& rDofSet, SparseMatrixType& rA, SystemVectorType& rDx,
                         SystemVectorType& rB);

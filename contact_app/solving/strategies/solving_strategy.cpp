@@ -62,10 +62,12 @@ void SolvingStrategy::ApplyConstraintValues() {
 
 void SolvingStrategy::Predict() {
     if (!mSolutionStepInitialized) InitializeSolutionStep();
-    mScheme->Predict(mModelPart, mBuilder->GetDofSet(), mA, mDx, mB);
+    PredictUnknowns();
     ApplyConstraintValues();
     if (mSettings.move_mesh_flag) MoveMesh();
 }
+
+void SolvingStrategy::PredictUnknowns() { mScheme->Predict(mModelPart, mBuilder->GetDofSet(), mA, mDx, mB); }
 
 bool SolvingStrategy::SolveSolutionStep() {
     mScheme->InitializeNonLinIteration(mModelPart, mA, mDx, mB);

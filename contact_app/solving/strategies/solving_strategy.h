@@ -67,6 +67,8 @@ protected:
     void SetUpSystemIfNeeded();
     /// Imposes u_s = T u_m + c on the slaves of the active constraints (Predict).
     void ApplyConstraintValues();
+    /// The unknowns of the new step, before the constraints and the mesh motion of Predict: the scheme's predictor.
+    virtual void PredictUnknowns();
     /// Calls the iteration observer, if any.
     void NotifyIteration() {
         if (mIterationObserver) mIterationObserver();

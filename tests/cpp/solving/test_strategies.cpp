@@ -218,6 +218,45 @@ TEST(BossakScheme, NewmarkMatchesTheExactDiscreteSolution) {
     for (std::size_t n = 0; n < history.size(); ++n) EXPECT_NEAR(history[n], std::cos(double(n) * theta), 1e-9);
 }
 
+TEST(BossakScheme, PredictPrescribedKeepsTheFreeDofsAndIntegratesThePrescribedVelocity) {
+    // Newmark (beta 1/4, gamma 1/2), dt = 0.1, u_n = (0.1, 0.2), v_n = (0.5, 0.3), a_n = (2, -1), v_y prescribed 0.4.
+    for (const bool extrapolate : {false, true}) {
+        SCOPED_TRACE(extrapolate ? "Predict" : "PredictPrescribed");
+        Model model;
+        ModelPart& part = MakeLine(model, 1);
+        part.GetProcessInfo().SetValue(DOMAIN_SIZE, 2);
+        Node& node = part.GetNode(1);
+        node.FastGetSolutionStepValue(DISPLACEMENT) = Array3{0.1, 0.2, 0.0};
+        node.FastGetSolutionStepValue(VELOCITY) = Array3{0.5, 0.3, 0.0};
+        node.FastGetSolutionStepValue(ACCELERATION) = Array3{2.0, -1.0, 0.0};
+        part.CloneTimeStep(0.1);
+        node.Fix(VELOCITY_Y);
+        node.FastGetSolutionStepValue(VELOCITY_Y) = 0.4;
+        BossakScheme scheme(0.0);
+        SparseMatrixType a;
+        SystemVectorType dx, b;
+        DofsArrayType dofs;
+        scheme.InitializeSolutionStep(part, a, dx, b);
+        if (extrapolate) scheme.Predict(part, dofs, a, dx, b);
+        else scheme.PredictPrescribed(part);
+        // Prescribed: 0.4 = 2/dt du - v_n gives du = 0.035 either way.
+        EXPECT_NEAR(node.FastGetSolutionStepValue(DISPLACEMENT_Y), 0.235, 1e-14);
+        EXPECT_NEAR(node.FastGetSolutionStepValue(VELOCITY_Y), 0.4, 1e-14);
+        // Free: u_n + dt v_n + dt^2/2 a_n = 0.16, or kept at 0.1 with v = -v_n, a = -4/dt v_n - a_n.
+        const double du = extrapolate ? 0.06 : 0.0;
+        EXPECT_NEAR(node.FastGetSolutionStepValue(DISPLACEMENT_X), 0.1 + du, 1e-14);
+        EXPECT_NEAR(node.FastGetSolutionStepValue(VELOCITY_X), 2.0 / 0.1 * du - 0.5, 1e-12);
+        EXPECT_NEAR(node.FastGetSolutionStepValue(ACCELERATION_X), 4.0 / 0.01 * du - 4.0 / 0.1 * 0.5 - 2.0, 1e-10);
+    }
+    // The static scheme prescribes nothing beyond what the processes set.
+    Model model;
+    ModelPart& part = MakeLine(model, 1);
+    part.GetNode(1).FastGetSolutionStepValue(DISPLACEMENT_X) = 0.3;
+    part.CloneTimeStep(1.0);
+    Scheme().PredictPrescribed(part);
+    EXPECT_EQ(part.GetNode(1).FastGetSolutionStepValue(DISPLACEMENT_X), 0.3);
+}
+
 TEST(BossakScheme, BossakDampsHighFrequenciesToTheSpectralRadiusAtInfinity) {
     // For ω Δt → ∞ the Bossak amplification has spectral radius (1 + α_m) / (1 − α_m).
     const double alpha = -0.3;

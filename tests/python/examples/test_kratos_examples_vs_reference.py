@@ -17,7 +17,7 @@ snapshot up to it. How far each system gets, and the tolerances:
 | cylinders vertical | t = 0.29 | t <= 0.29 (slow) | 6.2e-4 reactions |
 | cylinders horizontal 1 | t = 0.1275 | t <= 0.1275 (slow) | 8.5e-4 displacement |
 | cylinders horizontal 2 | t = 0.1475 | t <= 0.1475 (slow) | 1.6e-2 reactions (ref) |
-| horizontal 2 frictional | t = 0.32 (step 1 unconverged) | strict xfail: ours stops at 0.0512 | |
+| horizontal 2 frictional | t = 0.32; 1, 2, 7, 8 unconverged | t <= 0.24 (slow) | 0.11 pressure |
 | hyperelastic tubes | step 1; step 2 unconverged | step 1 | 7.1 % reaction (ref) |
 | double arch | t = 0.0025; 6-8 unconverged | t <= 0.0025 | 1.5e-3 pressure |
 | double arch frictional | stops in step 1 (CONTACT LOST) | ours: step 1; xfail: stops at 2 | |
@@ -334,24 +334,42 @@ def test_reference_reactions_do_not_balance_before_contact(name: str) -> None:
 
 
 @pytest.mark.slow
+def test_cylinders_horizontal_2_frictional_agrees_where_the_reference_converges() -> None:
+    """Horizontal 2, frictional (mu = 1), dynamic (Bossak), time step 0.04, to t = 0.24.
+
+    The reference does not converge its steps 1 and 2 (20 iterations each, multiplier norms
+    1e23-1e26) and converges steps 3-6 (t = 0.12 ... 0.24, 4-5 iterations, 11-18 active nodes);
+    its steps 7 and 8 stop unconverged again. Ours converges steps 1-6 (3, 17, 13, 12, 11, 12
+    iterations; 12 s). Before the contact strategy stopped extrapolating with the Bossak
+    predictor, our step 2 inverted tetrahedra next to the driven face and the run gave up at
+    t = 0.0775. The two histories part at the reference's unconverged steps 1-2 (its state at
+    t = 0.08 is the end of 20 failed iterations), so the differences grow with time: measured at
+    t = 0.12 / 0.24: displacement 4.3e-3 / 8.0e-3, reactions 5.2e-3 / 2.2e-2 of the scale,
+    the same active nodes, contact pressure median 1.2e-2 / 1.1e-1, largest 1.1e-1 / 2.5e-2.
+    The tolerances are about those doubled, as for the other models; ours balances its
+    reactions to 1e-4 of the scale at every compared step (checked in ``compare``).
+    """
+    compare("cylinders_horizontal_2_frictional", 0.24, _tolerances(1.6e-2, 4.5e-2, 0, 0.25, 0.25))
+
+
+@pytest.mark.slow
 @pytest.mark.xfail(
     strict=True,
     raises=AssertionError,
-    reason="ours stops at t = 0.0775 (step cutting gave up after 461 sub-steps of 4e-5, 742 s; "
-    "0.0512 before the slip constant max(kappa, 1) eps) where the reference reaches 0.32",
+    reason="ours stops at step 7 (t = 0.28): 20 iterations, LM ratio 0.83, slip ratio 3.4e2, "
+    "19 of the 20 slip directions still turning (the reference stops there too)",
 )
-def test_cylinders_horizontal_2_frictional_reaches_the_reference() -> None:
-    """Horizontal 2, frictional (mu = 1), dynamic (Bossak), time step 0.04.
+def test_cylinders_horizontal_2_frictional_converges_step_7() -> None:
+    """Step 7 of the frictional horizontal 2 (t = 0.28): all 20 active nodes slip.
 
-    The reference does not converge its step 1 (20 iterations, 1 active node; not compared) and
-    converges steps 2-8 (t = 0.08 ... 0.32, 4-12 iterations each, 11-20 active nodes). Ours
-    converges step 1 with no active node, meets an inverted tetrahedron in step 2 and cuts it,
-    and the cut gives up at t = 0.0512 (sub-steps of 4e-5 whose slip does not converge): 37 s of
-    CPU. Ours is not shown right here, so this is a strict xfail on reaching the reference's
-    converged t = 0.08 and 0.12; the tolerances are those of the frictionless horizontal 2,
-    doubled for the friction, to be measured when ours gets there.
+    Ours fails it at 20 iterations with the displacement converged (ratio 3.9e-4) and the slip
+    directions still turning; the reference stops unconverged at the same step. With the step
+    halved (0.02) ours fails already at t = 0.08 in the same way (7 of 7 slip directions
+    turning): the slip law's direction iteration at large slip increments is what is left.
     """
-    compare("cylinders_horizontal_2_frictional", 0.12, _tolerances(4e-3, 5e-2, 1, 2e-2, 2e-2))
+    history, _, failure = _ours("cylinders_horizontal_2_frictional", 0.32)
+    assert failure is None, failure
+    assert all(step["converged"] for step in history)
 
 
 def test_double_arch_frictional_converges_the_step_where_the_reference_stops() -> None:
