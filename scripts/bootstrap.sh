@@ -19,11 +19,12 @@ fi
 
 python=${PYTHON:-python3}
 # pybind11-stubgen is pinned: tests/python/test_core_stubs.py compares its output with the committed stubs.
-if ! "$python" -c "import scikit_build_core, pybind11, numpy, meshio, matplotlib, pytest, cmake, pybind11_stubgen" \
+if ! "$python" -c "import scikit_build_core, pybind11, numpy, meshio, matplotlib, pytest, cmake, pybind11_stubgen, mypy" \
   >/dev/null 2>&1; then
   echo "bootstrap: installing Python build and test packages"
   "$python" -m pip install -q "scikit-build-core>=0.9" "pybind11>=2.12" "numpy>=1.24" "meshio>=5.3" \
-    "matplotlib>=3.5" "pytest>=7.4" "ruff>=0.5" "cmake>=3.20" ninja "pybind11-stubgen==3.0.0"
+    "matplotlib>=3.5" "pytest>=7.4" "ruff>=0.5" "cmake>=3.20" ninja "pybind11-stubgen==3.0.0" \
+    "mypy>=1.10"
 fi
 
 # Incremental C++ build (ccache + a persistent build/python directory): fast when nothing changed.

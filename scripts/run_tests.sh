@@ -10,5 +10,7 @@ ctest --test-dir build/python --output-on-failure -j "$(nproc)"
 echo "== Python lint (ruff) =="
 "$python" -m ruff check contact_app python_scripts tests/python examples benchmarks
 "$python" -m ruff format --check contact_app python_scripts tests/python examples benchmarks
+echo "== Python types (mypy) =="
+"$python" -m mypy  # files and options: pyproject.toml [tool.mypy]
 echo "== Python tests (pytest) =="
 "$python" -m pytest tests/python "$@"

@@ -37,8 +37,11 @@ class PathResolver:
     def __init__(self, base_dir: str | Path | None = None):
         self.base_dir = Path(base_dir).resolve() if base_dir is not None else None
 
-    def _fallback_applies(self, path: Path) -> bool:
-        return not path.is_absolute() and self.base_dir is not None and self.base_dir != Path.cwd()
+    def _fallback_dir(self, path: Path) -> Path | None:
+        """The settings file's folder if a relative path is also looked up there, else None."""
+        if path.is_absolute() or self.base_dir is None or self.base_dir == Path.cwd():
+            return None
+        return self.base_dir
 
     def input_path(self, value: str, where: str, what: str = "file") -> str:
         """Return the path of an existing input file.
@@ -61,13 +64,14 @@ class PathResolver:
         if path.exists():
             return _regular(value, where, what)
         looked = [str(path.resolve())]
-        if self._fallback_applies(path):
-            folders = [self.base_dir, *self.base_dir.parents]  # type: ignore[union-attr]
+        base_dir = self._fallback_dir(path)
+        if base_dir is not None:
+            folders = [base_dir, *base_dir.parents]
             for folder in folders:
                 candidate = folder / path
                 if candidate.exists():
                     return _regular(str(candidate), where, what)
-            looked.append(str(self.base_dir / path) + " (and the same below its parent folders)")
+            looked.append(str(base_dir / path) + " (and the same below its parent folders)")
         raise InputError(
             f'{what} "{quote(value)}" not found\n  where:    {where}\n'
             f"  expected: an existing file; looked for {' and '.join(looked)}\n"
@@ -83,9 +87,10 @@ class PathResolver:
         the folders).
         """
         path = Path(value)
-        if not self._fallback_applies(path):
+        base_dir = self._fallback_dir(path)
+        if base_dir is None:
             return value
-        candidate = self.base_dir / path  # type: ignore[operator]
+        candidate = base_dir / path
         here_ok = path.exists() or path.parent.exists()
         there_ok = candidate.exists() or candidate.parent.exists()
         if not here_ok and there_ok:

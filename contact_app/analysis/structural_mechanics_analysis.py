@@ -257,14 +257,14 @@ def _ValidateRestartOptions(parameters: Parameters) -> None:
     imports = solver["model_import_settings"]
     base = RestartBaseName(parameters)
     label = RestartLabel(options["Restart Step"].GetDouble(), control)
-    for key, value in (
+    for key, text in (
         ("input_type", "rest"),
         ("input_filename", base),
         ("restart_load_file_label", label),
     ):
         if imports.Has(key):
             imports.RemoveValue(key)
-        imports.AddValue(key, value)
+        imports.AddValue(key, text)
 
 
 def _ValidateProblemData(problem_data: Parameters) -> None:

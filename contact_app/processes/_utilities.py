@@ -195,7 +195,8 @@ class CsvTable:
                 continue
             try:
                 pair = [row[c].strip() for c in columns]
-                point = tuple(float(v) if v and v.lower() != "nan" else na_replace for v in pair)
+                x, y = (float(v) if v and v.lower() != "nan" else na_replace for v in pair)
+                point = (x, y)
                 if not all(math.isfinite(v) for v in point):
                     raise ValueError("not finite")
                 points.append(point)

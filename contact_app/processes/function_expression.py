@@ -25,7 +25,7 @@ import copy
 import math
 from collections.abc import Callable
 from functools import reduce
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
@@ -442,7 +442,8 @@ class _Folder(ast.NodeTransformer):
 
     def visit_Constant(self, node: ast.Constant) -> ast.expr:  # noqa: N802
         try:
-            value = float(node.value)
+            # _check admitted only int and float constants (not bool): the cast states it for mypy.
+            value = float(cast("int | float", node.value))
         except OverflowError:
             value = math.inf
         if not math.isfinite(value):

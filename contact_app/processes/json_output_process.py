@@ -192,10 +192,10 @@ class JsonOutputProcess(Process):
                 if not self._selected(element):
                     continue
                 entry = data.setdefault(element_key(element), {})
-                values = gauss_values(element, self.gauss_columns, process_info)
+                at_points = gauss_values(element, self.gauss_columns, process_info)
                 for column in self.gauss_columns:
                     per_point = entry.setdefault(column.name, {})
-                    for point, value in enumerate(values[column.name]):
+                    for point, value in enumerate(at_points[column.name]):
                         per_point.setdefault(str(point), [None] * (count - 1)).append(value)
         _pad(data, count)
         self._write()

@@ -9,13 +9,14 @@ from __future__ import annotations
 
 import logging
 from collections.abc import Callable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import contact_app as ca
 from contact_app.analysis.paths import PathResolver
 from contact_app.analysis.solvers.convergence_criteria_factory import (
     CONTACT_CRITERIA,
     STRUCTURAL_CRITERIA,
+    ConvergenceCriterion,
     check_criterion_name,
 )
 from contact_app.analysis.validation import error, not_supported
@@ -23,6 +24,15 @@ from contact_app.legacy_keys import convert_legacy_keys
 from contact_app.parameters import Parameters, suggest
 
 from .contact_convergence_criteria_factory import CreateContactConvergenceCriterion
+
+if TYPE_CHECKING:
+    from contact_app.analysis.solvers.mechanical_solver import MechanicalSolver
+
+    # For the type checker the contact mixins are structural solvers (their super() calls reach
+    # one); at run time their base is object, and the concrete solvers put them first in the MRO.
+    SolverMixinBase = MechanicalSolver
+else:
+    SolverMixinBase = object
 
 logger = logging.getLogger("contact_app.contact")
 
@@ -183,11 +193,8 @@ def contact_status(
     return (active, slip, pairs, penetration)
 
 
-class ContactSolverMixin:
+class ContactSolverMixin(SolverMixinBase):
     """Contact additions to a structural solver (used before the structural base in the MRO)."""
-
-    main_model_part: ca.ModelPart
-    settings: Parameters
 
     def __init__(
         self, model: ca.Model, custom_settings: Parameters, paths: PathResolver | None = None
@@ -201,12 +208,12 @@ class ContactSolverMixin:
             and custom_settings[key].IsBool()
             and not custom_settings[key].GetBool()
         ]
-        super().__init__(model, custom_settings, paths)  # type: ignore[call-arg]
+        super().__init__(model, custom_settings, paths)
 
     @classmethod
     def GetDefaultParameters(cls) -> dict[str, Any]:
         """The structural defaults plus ``contact_settings``."""
-        defaults = super().GetDefaultParameters()  # type: ignore[misc]
+        defaults = super().GetDefaultParameters()
         defaults["contact_settings"] = CONTACT_SETTINGS_DEFAULTS
         return defaults
 
@@ -228,7 +235,7 @@ class ContactSolverMixin:
             )
         for key in FORCED_SOLVER_SETTINGS:
             self.settings[key].SetBool(True)
-        super().ValidateSettings()  # type: ignore[misc]
+        super().ValidateSettings()
 
     def StepCuttingSettings(self) -> tuple[float, int] | None:
         """(split_factor, max_number_splits) with ``adaptative_strategy``, else None.
@@ -256,16 +263,16 @@ class ContactSolverMixin:
 
     def AddVariables(self) -> None:
         """Structural variables plus those of the mortar_type."""
-        super().AddVariables()  # type: ignore[misc]
+        super().AddVariables()
         for variable in mortar_variables(self.mortar_type):
             self.main_model_part.AddNodalSolutionStepVariable(variable)
 
     def _DofsWithReactions(self) -> list[tuple[Any, Any]]:
-        return super()._DofsWithReactions() + mortar_dofs(self.mortar_type)  # type: ignore[misc]
+        return super()._DofsWithReactions() + mortar_dofs(self.mortar_type)
 
     def _CreateLinearSolver(self) -> Any:
         """The structural linear solver, wrapped in the condensing solver for vector multipliers."""
-        solver = super()._CreateLinearSolver()  # type: ignore[misc]
+        solver = super()._CreateLinearSolver()
         contact = self.settings["contact_settings"]
         vector_lm = self.mortar_type == "ALMContactFrictionlessComponents" or (
             self.mortar_type.startswith("ALMContactFrictional")
@@ -283,13 +290,13 @@ class ContactSolverMixin:
             )
         return ca.MixedULMLinearSolver(solver)
 
-    def _CreateConvergenceCriterion(self) -> Any:
+    def _CreateConvergenceCriterion(self) -> ConvergenceCriterion:
         return CreateContactConvergenceCriterion(self.settings, self.mortar_type)
 
     def _CreateSolutionStrategy(self) -> Any:
         settings = self.settings
         if settings["analysis_type"].GetString() == "linear":
-            return super()._CreateSolutionStrategy()  # type: ignore[misc]
+            return super()._CreateSolutionStrategy()
         strategy_settings = settings["solving_strategy_settings"]
         kind = strategy_settings["type"].GetString()
         if kind not in ("newton_raphson", "line_search"):
@@ -300,13 +307,10 @@ class ContactSolverMixin:
                 'use "newton_raphson" or "line_search"',
             )
         contact = settings["contact_settings"]
-        arguments = {
-            "max_iteration": settings["max_iteration"].GetInt(),
-            "compute_reactions": settings["compute_reactions"].GetBool(),
-            "reform_step_dofs": True,
-            "move_mesh_flag": settings["move_mesh_flag"].GetBool(),
-            "inner_loop_iterations": contact["inner_loop_iterations"].GetInt(),
-        }
+        max_iteration = settings["max_iteration"].GetInt()
+        compute_reactions = settings["compute_reactions"].GetBool()
+        move_mesh_flag = settings["move_mesh_flag"].GetBool()
+        inner_loop_iterations = contact["inner_loop_iterations"].GetInt()
         strategy = (
             ca.LineSearchContactStrategy
             if kind == "line_search"
@@ -317,7 +321,11 @@ class ContactSolverMixin:
             self._GetScheme(),
             self._GetConvergenceCriterion().criterion,
             self._GetBuilderAndSolver(),
-            **arguments,
+            max_iteration=max_iteration,
+            compute_reactions=compute_reactions,
+            reform_step_dofs=True,
+            move_mesh_flag=move_mesh_flag,
+            inner_loop_iterations=inner_loop_iterations,
         )
 
     def Initialize(self) -> None:
@@ -338,9 +346,9 @@ class ContactSolverMixin:
         simplified = self.settings["contact_settings"]["simplified_semi_smooth_newton"].GetBool()
         for part in (self.main_model_part, self.GetComputingModelPart()):
             part.Set(ca.INTERACTION, not simplified)
-        super().Initialize()  # type: ignore[misc]
+        super().Initialize()
         if self.settings["contact_settings"]["silent_strategy"].GetBool():
-            self._GetSolutionStrategy().SetEchoLevel(0)  # type: ignore[attr-defined]
+            self._GetSolutionStrategy().SetEchoLevel(0)
 
     def ContactStatus(self) -> tuple[int, int, int, float]:
         """(active slave nodes, slipping ones, live pairs, max penetration) for the step table.
@@ -365,6 +373,6 @@ class ContactSolverMixin:
 
     def FinalizeSolutionStep(self) -> None:
         """Finalize the step; with ``ensure_contact`` a step without contact is an error."""
-        super().FinalizeSolutionStep()  # type: ignore[misc]
+        super().FinalizeSolutionStep()
         if self.settings["contact_settings"]["ensure_contact"].GetBool():
             ca.ContactUtilities.CheckActivity(self.GetComputingModelPart(), True)

@@ -17,9 +17,9 @@ from contact_app.analysis.solvers.convergence_criteria_factory import (
     CreateConvergenceCriterion,
 )
 from contact_app.analysis.validation import error, not_supported
-from contact_app.parameters import Parameters, suggest
+from contact_app.parameters import suggest
 
-from .auxiliary_methods_solvers import contact_status
+from .auxiliary_methods_solvers import SolverMixinBase, contact_status
 
 logger = logging.getLogger("contact_app.contact")
 
@@ -42,16 +42,13 @@ def mpc_variables(contact_type: str) -> list[Any]:
     return variables
 
 
-class MPCContactSolverMixin:
+class MPCContactSolverMixin(SolverMixinBase):
     """MPC contact additions to a structural solver (used before the structural base in the MRO)."""
-
-    main_model_part: ca.ModelPart
-    settings: Parameters
 
     @classmethod
     def GetDefaultParameters(cls) -> dict[str, Any]:
         """The structural defaults plus ``mpc_contact_settings``."""
-        defaults = super().GetDefaultParameters()  # type: ignore[misc]
+        defaults = super().GetDefaultParameters()
         defaults["mpc_contact_settings"] = MPC_CONTACT_SETTINGS_DEFAULTS
         return defaults
 
@@ -88,11 +85,11 @@ class MPCContactSolverMixin:
             if not self.settings[key].GetBool():
                 logger.info("mpc_contact_settings: %s forced to true", key)
             self.settings[key].SetBool(True)
-        super().ValidateSettings()  # type: ignore[misc]
+        super().ValidateSettings()
 
     def AddVariables(self) -> None:
         """Structural variables plus NORMAL, NODAL_H, WEIGHTED_GAP (+ WEIGHTED_SLIP, frictional)."""
-        super().AddVariables()  # type: ignore[misc]
+        super().AddVariables()
         for variable in mpc_variables(self.contact_type):
             self.main_model_part.AddNodalSolutionStepVariable(variable)
 
@@ -105,7 +102,7 @@ class MPCContactSolverMixin:
                 "elimination builder with constraints (the MPC route needs it)",
                 kind,
             )
-        return ca.ResidualBasedEliminationBuilderAndSolver(self._GetLinearSolver())  # type: ignore[attr-defined]
+        return ca.ResidualBasedEliminationBuilderAndSolver(self._GetLinearSolver())
 
     def _CreateConvergenceCriterion(self) -> ConvergenceCriterion:
         """And(structural criterion, MPCContactCriteria)."""
@@ -136,10 +133,10 @@ class MPCContactSolverMixin:
             )
         mpc = settings["mpc_contact_settings"]
         return ca.ResidualBasedNewtonRaphsonMPCContactStrategy(
-            self.GetComputingModelPart(),  # type: ignore[attr-defined]
-            self._GetScheme(),  # type: ignore[attr-defined]
-            self._GetConvergenceCriterion().criterion,  # type: ignore[attr-defined]
-            self._GetBuilderAndSolver(),  # type: ignore[attr-defined]
+            self.GetComputingModelPart(),
+            self._GetScheme(),
+            self._GetConvergenceCriterion().criterion,
+            self._GetBuilderAndSolver(),
             max_iteration=settings["max_iteration"].GetInt(),
             compute_reactions=True,
             reform_step_dofs=True,
@@ -167,7 +164,7 @@ class MPCContactSolverMixin:
         # The MPC route uses the opposite convention of the mortar solvers: INTERACTION on the
         # ProcessInfo selects the outer active-set loop (kratos_python_layer.md §6.6).
         self.main_model_part.ProcessInfo.Set(ca.INTERACTION, simplified.GetBool())
-        super().Initialize()  # type: ignore[misc]
+        super().Initialize()
 
     def ContactStatus(self) -> tuple[int, int, int, float]:
         """(active slave nodes, slipping ones, live pairs, max penetration) for the step table.

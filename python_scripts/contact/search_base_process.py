@@ -120,6 +120,9 @@ class SearchBaseProcess(Process):
 
     #: What the processes call themselves in messages.
     process_name = "search_base_process"
+    #: The "Contact" and "ComputingContact" sub model parts of the main one (ExecuteInitialize).
+    contact_model_part: ca.ModelPart
+    computing_model_part: ca.ModelPart
 
     def __init__(
         self,
@@ -157,7 +160,6 @@ class SearchBaseProcess(Process):
         self.searches: dict[str, Any] = {}
         self.pair_properties: dict[str, Any] = {}
         self.preprocess = False
-        self.contact_model_part: ca.ModelPart | None = None
 
     # -- construction-time checks --
 
@@ -505,9 +507,9 @@ class SearchBaseProcess(Process):
             # A generated face is slave when all its nodes are (the slave list names bodies).
             for part in parts:
                 for condition in part.Conditions:
-                    slave = all(node.Is(ca.SLAVE) for node in condition.GetGeometry())
-                    condition.Set(ca.SLAVE, slave)
-                    condition.Set(ca.MASTER, not slave)
+                    is_slave = all(node.Is(ca.SLAVE) for node in condition.GetGeometry())
+                    condition.Set(ca.SLAVE, is_slave)
+                    condition.Set(ca.MASTER, not is_slave)
         for part in parts:
             sub.AddNodes([node.Id for node in part.Nodes])
             sub.AddConditions([condition.Id for condition in part.Conditions])
