@@ -14,6 +14,7 @@
 #include "custom_processes/master_slave_process.h"
 #include "custom_processes/normal_check_process.h"
 #include "custom_utilities/contact_utilities.h"
+#include "tests/cpp/kratos_cases.h"
 
 namespace contact_app {
 namespace {
@@ -55,6 +56,7 @@ void ExpectOutwardNormals(const ModelPart& part) {
 }
 
 TEST(InterfacePreprocess, test_2d_patch_nodes_only_part_gets_one_line_per_body) {
+    CONTACT_SKIP_WITHOUT_KRATOS_CASES();
     Model model;
     ModelPart& root = ReadReference(model, "ALM_frictionless_contact_test_2D/hyper_simple_patch_test");
     ModelPart& contact = root.GetSubModelPart("Contact_Part");
@@ -84,6 +86,7 @@ TEST(InterfacePreprocess, test_2d_patch_nodes_only_part_gets_one_line_per_body) 
 }
 
 TEST(InterfacePreprocess, test_2d_taylor_patch_ids_continue_after_the_load_conditions) {
+    CONTACT_SKIP_WITHOUT_KRATOS_CASES();
     Model model;
     ModelPart& root = ReadReference(model, "ALM_frictionless_contact_test_2D/taylor_patch_test");
     const IndexType max_id = root.Conditions().MaxId();
@@ -102,6 +105,7 @@ TEST(InterfacePreprocess, test_2d_taylor_patch_ids_continue_after_the_load_condi
 }
 
 TEST(InterfacePreprocess, test_3d_sloped_patch_gets_two_quadrilaterals) {
+    CONTACT_SKIP_WITHOUT_KRATOS_CASES();
     Model model;
     ModelPart& root = ReadReference(model, "ALM_frictionless_contact_test_3D/3D_contact_simplest_patch_matching_slope_test");
     ModelPart& contact = root.GetSubModelPart("Contact_Part");
@@ -123,6 +127,7 @@ TEST(InterfacePreprocess, test_3d_sloped_patch_gets_two_quadrilaterals) {
 }
 
 TEST(InterfacePreprocess, test_whole_skin_of_the_main_model_part) {
+    CONTACT_SKIP_WITHOUT_KRATOS_CASES();
     Model model2d, model3d;
     ModelPart& root2d = ReadReference(model2d, "ALM_frictionless_contact_test_2D/hyper_simple_patch_test");
     ModelPart& skin2d = root2d.CreateSubModelPart("Contact").CreateSubModelPart("ContactSub0");
@@ -208,6 +213,7 @@ TEST(InterfacePreprocess, test_find_nodal_h_on_a_regular_grid) {
 }
 
 TEST(InterfacePreprocess, test_find_nodal_h_on_the_2d_patch) {
+    CONTACT_SKIP_WITHOUT_KRATOS_CASES();
     Model model;
     ModelPart& root = ReadReference(model, "ALM_frictionless_contact_test_2D/hyper_simple_patch_test");
     FindNodalHProcess(root).Execute();
@@ -243,6 +249,7 @@ TEST(InterfacePreprocess, test_normal_check_flips_inward_conditions_only) {
 }
 
 TEST(InterfacePreprocess, test_normal_check_in_3d) {
+    CONTACT_SKIP_WITHOUT_KRATOS_CASES();
     Model model;
     ModelPart& root = ReadReference(model, "ALM_frictionless_contact_test_3D/3D_contact_simplest_patch_matching_slope_test");
     ModelPart& contact = root.GetSubModelPart("Contact_Part");

@@ -12,6 +12,7 @@
 #include "contact_app/kernel/model.h"
 #include "contact_app/kernel/registry.h"
 #include "contact_app/kernel/variables.h"
+#include "tests/cpp/kratos_cases.h"
 
 namespace contact_app {
 namespace {
@@ -34,6 +35,7 @@ struct ReferenceCase {
 class ReferenceMeshTest : public ::testing::TestWithParam<ReferenceCase> {};
 
 TEST_P(ReferenceMeshTest, ReadsTheCountsOfTheFile) {
+    CONTACT_SKIP_WITHOUT_KRATOS_CASES();
     RegisterContactApplication();
     const ReferenceCase& reference = GetParam();
     Model model;
