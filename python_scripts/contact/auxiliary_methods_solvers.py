@@ -8,7 +8,7 @@ dynamic contact solvers share.
 from __future__ import annotations
 
 import logging
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 
 import contact_app as ca
@@ -99,6 +99,44 @@ CONTACT_SETTINGS_DEFAULTS: dict[str, Any] = {
 #: the builder must rebuild the DoF set every step (``reform_dofs_at_each_step``) and the strategy
 #: must drop the system it stored for the previous DoF set (``clear_storage``).
 FORCED_SOLVER_SETTINGS = ("reform_dofs_at_each_step", "clear_storage")
+
+
+class ForcedSettings:
+    """``solver_settings`` booleans a contact solver sets to true whatever the file says.
+
+    The file's values are read when the solver is created, before the defaults fill in the missing
+    keys: a key left out, or set true, is forced without a word; the keys set false get one warning
+    naming them and why.
+
+    Args:
+        custom_settings: the ``solver_settings`` as the file gave them.
+        keys: the keys forced to true.
+        reason: why, completing "false overridden with true, as ...".
+
+    """
+
+    def __init__(self, custom_settings: Parameters, keys: Sequence[str], reason: str) -> None:
+        self.keys = tuple(keys)
+        self.reason = reason
+        self.false_keys = [
+            key
+            for key in self.keys
+            if custom_settings.Has(key)
+            and custom_settings[key].IsBool()
+            and not custom_settings[key].GetBool()
+        ]
+
+    def Apply(self, settings: Parameters) -> None:
+        """Warn once about the keys the file set false, then set every key to true."""
+        if self.false_keys:
+            logger.warning(
+                "%s › %s: false overridden with true, as %s",
+                settings.Where(),
+                " and ".join(self.false_keys),
+                self.reason,
+            )
+        for key in self.keys:
+            settings[key].SetBool(True)
 
 
 def mortar_variables(mortar_type: str) -> list[Any]:
@@ -199,15 +237,13 @@ class ContactSolverMixin(SolverMixinBase):
     def __init__(
         self, model: ca.Model, custom_settings: Parameters, paths: PathResolver | None = None
     ) -> None:
-        # The keys of FORCED_SOLVER_SETTINGS the user set to false, read before the defaults
-        # fill in the missing ones (a key left out is forced without a word).
-        self._forced_false_keys = [
-            key
-            for key in FORCED_SOLVER_SETTINGS
-            if custom_settings.Has(key)
-            and custom_settings[key].IsBool()
-            and not custom_settings[key].GetBool()
-        ]
+        self._forced = ForcedSettings(
+            custom_settings,
+            FORCED_SOLVER_SETTINGS,
+            "the contact solvers require: the contact pairs, and with them the Lagrange multiplier "
+            "DoFs, change between steps, so the DoF set is rebuilt and the stored system cleared "
+            "at every step",
+        )
         super().__init__(model, custom_settings, paths)
 
     @classmethod
@@ -225,16 +261,7 @@ class ContactSolverMixin(SolverMixinBase):
         self.mortar_type = check_mortar_type(contact)
         # split_factor, max_number_splits, ... were range-checked by the defaults validation.
         # Pairs appear and disappear between steps: the DoF set is rebuilt every step.
-        if self._forced_false_keys:
-            logger.warning(
-                "%s › %s: false overridden with true, as the contact solvers require: the contact "
-                "pairs, and with them the Lagrange multiplier DoFs, change between steps, so the "
-                "DoF set is rebuilt and the stored system cleared at every step",
-                self.settings.Where(),
-                " and ".join(self._forced_false_keys),
-            )
-        for key in FORCED_SOLVER_SETTINGS:
-            self.settings[key].SetBool(True)
+        self._forced.Apply(self.settings)
         super().ValidateSettings()
 
     def StepCuttingSettings(self) -> tuple[float, int] | None:

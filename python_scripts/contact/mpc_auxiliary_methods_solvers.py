@@ -12,14 +12,15 @@ import logging
 from typing import Any
 
 import contact_app as ca
+from contact_app.analysis.paths import PathResolver
 from contact_app.analysis.solvers.convergence_criteria_factory import (
     ConvergenceCriterion,
     CreateConvergenceCriterion,
 )
 from contact_app.analysis.validation import error, not_supported
-from contact_app.parameters import suggest
+from contact_app.parameters import Parameters, suggest
 
-from .auxiliary_methods_solvers import SolverMixinBase, contact_status
+from .auxiliary_methods_solvers import ForcedSettings, SolverMixinBase, contact_status
 
 logger = logging.getLogger("contact_app.contact")
 
@@ -33,6 +34,10 @@ MPC_CONTACT_SETTINGS_DEFAULTS: dict[str, Any] = {
     "enforce_ntn": False,
 }
 
+#: ``solver_settings`` the MPC contact solvers set to true whatever the file says: the MPC criterion
+#: reads the contact forces from the reactions, and the contact constraints change between steps.
+MPC_FORCED_SOLVER_SETTINGS = ("compute_reactions", "reform_dofs_at_each_step", "clear_storage")
+
 
 def mpc_variables(contact_type: str) -> list[Any]:
     """Historical variables of the MPC route besides the structural ones (§6.3)."""
@@ -44,6 +49,18 @@ def mpc_variables(contact_type: str) -> list[Any]:
 
 class MPCContactSolverMixin(SolverMixinBase):
     """MPC contact additions to a structural solver (used before the structural base in the MRO)."""
+
+    def __init__(
+        self, model: ca.Model, custom_settings: Parameters, paths: PathResolver | None = None
+    ) -> None:
+        self._forced = ForcedSettings(
+            custom_settings,
+            MPC_FORCED_SOLVER_SETTINGS,
+            "the MPC contact solvers require: the MPC criterion reads the contact forces from the "
+            "reactions, and the contact constraints change between steps, so the DoF set is "
+            "rebuilt and the stored system cleared at every step",
+        )
+        super().__init__(model, custom_settings, paths)
 
     @classmethod
     def GetDefaultParameters(cls) -> dict[str, Any]:
@@ -80,11 +97,7 @@ class MPCContactSolverMixin(SolverMixinBase):
                 "node-to-node enforcement of the MPC contact",
                 'set "enforce_ntn": false (Kratos accepts it but does not implement it either)',
             )
-        # The criterion reads the contact forces from the reactions; pairs change between steps.
-        for key in ("compute_reactions", "reform_dofs_at_each_step", "clear_storage"):
-            if not self.settings[key].GetBool():
-                logger.info("mpc_contact_settings: %s forced to true", key)
-            self.settings[key].SetBool(True)
+        self._forced.Apply(self.settings)
         super().ValidateSettings()
 
     def AddVariables(self) -> None:

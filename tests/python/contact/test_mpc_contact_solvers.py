@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import logging
 from pathlib import Path
 
 import pytest
@@ -9,6 +10,7 @@ import pytest
 import contact_app as ca
 from contact_app.analysis import StructuralMechanicsAnalysis
 from contact_app.analysis.reporting import Reporter
+from contact_app.contact.mpc_auxiliary_methods_solvers import MPC_FORCED_SOLVER_SETTINGS
 from contact_app.parameters import Parameters
 
 CASES_DIR = Path(__file__).resolve().parents[3].parent / "shared" / "kratos_cases"
@@ -111,6 +113,48 @@ def test_mpc_solver_modules_follow_the_solver_type() -> None:
         # Forced settings of the MPC route.
         for key in ("compute_reactions", "reform_dofs_at_each_step", "clear_storage"):
             assert settings[key].GetBool()
+
+
+@pytest.mark.parametrize(
+    ("given", "named"),
+    [
+        ({}, []),
+        (dict.fromkeys(MPC_FORCED_SOLVER_SETTINGS, True), []),
+        ({"compute_reactions": False}, ["compute_reactions"]),
+        (
+            {"reform_dofs_at_each_step": False, "clear_storage": False, "compute_reactions": True},
+            ["reform_dofs_at_each_step", "clear_storage"],
+        ),
+    ],
+    ids=["not_given", "all_true", "reactions_false", "dofs_false"],
+)
+def test_mpc_forced_settings_are_silent_unless_the_user_said_false(
+    given: dict[str, bool], named: list[str], caplog: pytest.LogCaptureFixture
+) -> None:
+    from contact_app.analysis.paths import PathResolver
+    from contact_app.analysis.solvers.solver_wrapper import CreateSolverByParameters
+
+    settings = _parameters()["solver_settings"]
+    for key in MPC_FORCED_SOLVER_SETTINGS:
+        if settings.Has(key):
+            settings.RemoveValue(key)
+    for key, value in given.items():
+        settings.AddValue(key, value)
+    with caplog.at_level(logging.DEBUG, logger="contact_app"):
+        CreateSolverByParameters(ca.Model(), settings, paths=PathResolver(CASES_DIR))
+    for key in MPC_FORCED_SOLVER_SETTINGS:
+        assert settings[key].GetBool()
+    records = [
+        r for r in caplog.records if any(k in r.getMessage() for k in MPC_FORCED_SOLVER_SETTINGS)
+    ]
+    if not named:
+        assert records == []  # not even an info line
+        return
+    assert len(records) == 1 and records[0].levelno == logging.WARNING
+    message = records[0].getMessage()
+    assert "solver_settings" in message and "MPC criterion reads the contact forces" in message
+    for key in MPC_FORCED_SOLVER_SETTINGS:
+        assert (key in message) == (key in named)
 
 
 def test_mpc_settings_unknown_key_is_an_input_error() -> None:
