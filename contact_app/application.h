@@ -12,8 +12,8 @@ class IndexMap;
 class IndexSet;
 class FrictionalLaw;
 
-// Contact variables (Kratos ContactStructuralMechanicsApplication, ../shared/spec/variables.md §3),
-// plus the later-version names of §6. Core variables the contact layer uses (NORMAL, NODAL_H,
+// Contact variables (Kratos ContactStructuralMechanicsApplication, docs/input_layer.md §6),
+// plus names later Kratos versions added. Core variables the contact layer uses (NORMAL, NODAL_H,
 // VECTOR_LAGRANGE_MULTIPLIER, ...) are kernel variables.
 
 /// X(type, NAME)

@@ -7,7 +7,8 @@ namespace {
 
 using namespace frictional_detail;
 
-/// RHS of kratos_residuals.md §3.3.1 for one pair, q = [u2 (d·n_m), u1 (d·n_s), λ (d·n_s)]. The slip law is nodal
+/// RHS of docs/theory/contact_residuals.md §5 for one pair, q = [u2 (d·n_m), u1 (d·n_s), λ (d·n_s)]. The slip law is
+/// nodal
 /// (docs/theory/mortar.md §7-8): k Pλ = −μ (kλ_n + ε Q̂) τ̄/|τ̄| with Q̂ the gap the pairs transmit and the direction
 /// of the trial traction τ̄ = kPλ + κεŜ (Ŝ the nodal weighted slip) instead of the reference's frozen t = Pλ/|Pλ|,
 /// which never turns in 3D; each pair adds its share ω_j of the law.

@@ -6,8 +6,9 @@
 
 namespace contact_app {
 
-/// ALM frictional (Coulomb) mortar contact, vector multiplier λ_j = VECTOR_LAGRANGE_MULTIPLIER (kratos_residuals.md
-/// §3.3.1). With g̃_j = −n_j·(D x1 − M x2)_j, P_j = I − n_j n_jᵀ, λ̄_n = k n·λ + ε g̃: inactive RHS_λ = −k²/ε λ_n n
+/// ALM frictional (Coulomb) mortar contact, vector multiplier λ_j = VECTOR_LAGRANGE_MULTIPLIER
+/// (docs/theory/contact_residuals.md
+/// §5). With g̃_j = −n_j·(D x1 − M x2)_j, P_j = I − n_j n_jᵀ, λ̄_n = k n·λ + ε g̃: inactive RHS_λ = −k²/ε λ_n n
 /// − k²/(κε) PᵀPλ; slip S_j[δ(kλ + εg̃n)], RHS_λ = k g̃ n − k/ε Pᵀ(kPλ + μ λ̄_n t); stick S_j[δ(kλ + εg̃n + κε s)],
 /// RHS_λ = k g̃ n + k Pᵀ s, s the objective or non-objective slip (switch on OPERATOR_THRESHOLD, recorded in
 /// MODIFIED). k = SCALE_FACTOR, κ = TANGENT_FACTOR, ε = INITIAL_PENALTY, δ = DYNAMIC_FACTOR, μ = FRICTION_COEFFICIENT,

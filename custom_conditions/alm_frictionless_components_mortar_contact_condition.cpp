@@ -8,7 +8,7 @@ namespace {
 
 using namespace frictionless_detail;
 
-/// RHS of kratos_residuals.md §3.2 for one pair, q = [u2 (d·n_m), u1 (d·n_s), λ (d·n_s)].
+/// RHS of docs/theory/contact_residuals.md §4 for one pair, q = [u2 (d·n_m), u1 (d·n_s), λ (d·n_s)].
 template <class T, int TDim, int TNS, int TNM, class TState, class TVector>
 void AddFrictionlessComponentsResidual(const TState& s, double k, const NodalParameters<TNS>& p, TVector& rhs) {
     using Vec = Eigen::Matrix<T, TDim, 1>;

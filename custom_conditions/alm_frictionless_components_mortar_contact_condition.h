@@ -6,7 +6,7 @@
 namespace contact_app {
 
 /// ALM frictionless mortar contact with a vector multiplier λ_j = VECTOR_LAGRANGE_MULTIPLIER per slave node
-/// (kratos_residuals.md §3.2). With g̃_j = −n_j·(D x1 − M x2)_j and P_j = I − n_j n_jᵀ:
+/// (docs/theory/contact_residuals.md §4). With g̃_j = −n_j·(D x1 − M x2)_j and P_j = I − n_j n_jᵀ:
 /// active node: S_j[δ_j (k λ_j + ε_j g̃_j n_j)] on the displacement rows (the full vector k λ_j, tangential
 /// part included), RHS_λj += k g̃_j n_j − k²/ε_j P_jᵀ P_j λ_j (the tangential part is regularised to zero);
 /// inactive node: RHS_λj += −k²/ε_j λ_j. k = SCALE_FACTOR (ProcessInfo), ε_j = INITIAL_PENALTY and

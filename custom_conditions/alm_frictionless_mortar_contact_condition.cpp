@@ -8,7 +8,7 @@ namespace {
 
 using namespace frictionless_detail;
 
-/// RHS of kratos_residuals.md §3.1 for one pair, q = [u2 (d·n_m), u1 (d·n_s), λ (n_s)].
+/// RHS of docs/theory/contact_residuals.md §3 for one pair, q = [u2 (d·n_m), u1 (d·n_s), λ (n_s)].
 template <class T, int TDim, int TNS, int TNM, class TState, class TVector>
 void AddFrictionlessResidual(const TState& s, double k, const NodalParameters<TNS>& p, TVector& rhs) {
     constexpr int lambda_offset = TDim * (TNS + TNM);

@@ -6,7 +6,7 @@
 namespace contact_app {
 
 /// ALM frictionless mortar contact, scalar multiplier λ_j = LAGRANGE_MULTIPLIER_CONTACT_PRESSURE per slave
-/// node (kratos_residuals.md §3.1). With g̃_j = −n_j·(D x1 − M x2)_j and λ̄_j = k λ_j + ε_j g̃_j:
+/// node (docs/theory/contact_residuals.md §3). With g̃_j = −n_j·(D x1 − M x2)_j and λ̄_j = k λ_j + ε_j g̃_j:
 /// active node: RHS_u1,k += δ_j λ̄_j D_jk n_j, RHS_u2,l −= δ_j λ̄_j M_jl n_j, RHS_λj += k g̃_j;
 /// inactive node: RHS_λj += −k²/ε_j λ_j. k = SCALE_FACTOR (ProcessInfo), ε_j = INITIAL_PENALTY and
 /// δ_j = DYNAMIC_FACTOR (nodal, non-historical; δ = 1 when the node has none). LHS = −∂RHS/∂q by AD.

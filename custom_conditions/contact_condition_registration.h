@@ -6,7 +6,7 @@
 
 namespace contact_app {
 
-/// One registered contact condition name, decoded (condition_classes.md, "Decoder").
+/// One registered contact condition name, decoded (docs/registered_conditions.md §1).
 struct ContactConditionName {
     std::string name;    ///< e.g. "ALMNVFrictionlessAxisymMortarContactCondition2D2N"
     std::string family;  ///< "ALMFrictionless", "ALMFrictionlessComponents", "ALMFrictional", "PenaltyFrictionless", ...

@@ -4,7 +4,8 @@
 /// encoding, the nodal friction data (μ_j, t_j, κ), the two slip measures, the objective switch, the
 /// start-of-step ("previous") mortar operators with their life cycle and restart state, and the explicit
 /// WEIGHTED_GAP + WEIGHTED_SLIP contribution. Builds on frictionless_mortar_contact_common.h. Internal to
-/// custom_conditions/. Equations: kratos_residuals.md §1 (slip measures), §3.3, §3.5, §6.
+/// custom_conditions/. Equations: docs/theory/contact_residuals.md §2 (slip measures), §5, §7;
+/// docs/theory/active_set.md §3.
 
 #include <array>
 #include <cmath>
@@ -48,7 +49,7 @@ Eigen::Matrix<double, TDim, 1> FallbackTangent(const Eigen::Matrix<double, TDim,
     return t;
 }
 
-/// Per-node constants of a frictional residual (none differentiated, kratos_residuals.md §3.6).
+/// Per-node constants of a frictional residual (none differentiated, docs/theory/contact_residuals.md §8).
 template <int TDim, int TNS>
 struct FrictionalParameters {
     NodalParameters<TNS> nodal;                ///< ε_j, δ_j, ACTIVE

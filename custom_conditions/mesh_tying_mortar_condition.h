@@ -8,8 +8,9 @@
 
 namespace contact_app {
 
-/// Mortar mesh tying with dual Lagrange multipliers (Kratos MeshTyingMortarCondition, condition_classes.md;
-/// kratos_residuals.md §4). The tied variable is the TYING_VARIABLE property (default "DISPLACEMENT"): a double
+/// Mortar mesh tying with dual Lagrange multipliers (Kratos MeshTyingMortarCondition; docs/theory/contact_residuals.md
+/// §10,
+/// docs/registered_conditions.md). The tied variable is the TYING_VARIABLE property (default "DISPLACEMENT"): a double
 /// variable is tied with SCALAR_LAGRANGE_MULTIPLIER, a 3-vector variable component by component (its _X, _Y(, _Z))
 /// with VECTOR_LAGRANGE_MULTIPLIER_X/Y(/Z). D and M (dual basis when Ae succeeds) are integrated once, in
 /// Initialize, with the coordinates of that moment, and cached: the operators of a tied interface are constant.

@@ -29,7 +29,7 @@ Eigen::Matrix<Dual<TMatrixSize>, R, C> ToLocalDofs(const Eigen::Matrix<Dual<TSla
 }
 
 /// Same derivatives, value replaced: the NV normals keep the nodal NORMAL the search computed (mean over the
-/// adjacent faces) and take the derivative of this face's own normals (kratos_cpp_internals.md §3.2).
+/// adjacent faces) and take the derivative of this face's own normals (docs/theory/mortar.md §5).
 template <int N, int R, int C>
 Eigen::Matrix<Dual<N>, R, C> WithValues(const Eigen::Matrix<Dual<N>, R, C>& m, const Eigen::Matrix<double, R, C>& v) {
     Eigen::Matrix<Dual<N>, R, C> result;

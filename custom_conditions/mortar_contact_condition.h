@@ -20,7 +20,7 @@ enum class FrictionalCase {
     FRICTIONAL_PENALTY = 4
 };
 
-/// Local system size of a family (condition_classes.md, "Template parameters").
+/// Local system size of a family (docs/registered_conditions.md §2).
 constexpr int MortarMatrixSize(int dim, int num_slave, FrictionalCase family, int num_master) {
     switch (family) {
         case FrictionalCase::FRICTIONLESS: return dim * (num_slave + num_master) + num_slave;
@@ -44,7 +44,8 @@ struct MortarPairState {
 
 /// Common flow of the mortar contact conditions (Kratos MortarContactCondition): isolation, exact
 /// segmentation, dual basis Ae, cell and Gauss loops (custom_utilities/mortar_operators.h), then the family
-/// residual RHS(q) (the force on the bodies, kratos_residuals.md §0). The RHS alone is evaluated in double;
+/// residual RHS(q) (the force on the bodies, docs/theory/contact_residuals.md §1). The RHS alone is evaluated in
+/// double;
 /// the LHS = −∂RHS/∂q is the AD derivative of the same residual over q = [master u, slave u, λ], the normals
 /// held constant unless TNormalVariation. Reads INTEGRATION_ORDER_CONTACT, CONSIDER_TESSELLATION, THICKNESS
 /// (axisymmetric) from the Properties and DISTANCE_THRESHOLD, ZERO_TOLERANCE_FACTOR from the ProcessInfo.

@@ -235,7 +235,8 @@ MPCConstraintRelation MPC_CLASS::ComputeConstraintRelation(const ProcessInfo& rC
     }
     // The test rows of the slipping nodes: v = n − μe in place of n. The slave's residual r (its constraint force
     // −r) then reaches the free components and the masters as λv = λn − μλe: the normal force λ and the Coulomb
-    // force μ|λ| along e, with λ the constraint force of the current iterate, linearised with it (docs §9).
+    // force μ|λ| along e, with λ the constraint force of the current iterate, linearised with it (docs/theory/mortar.md
+    // §9).
     if (!slip_rows.empty()) {
         result.test_relation = result.relation;
         result.test_slave_coupling = result.slave_coupling;

@@ -22,7 +22,8 @@ struct MPCConstraintRelation {
 };
 
 /// Mortar contact imposed through a multipoint constraint (Kratos MPCMortarContactCondition,
-/// kratos_residuals.md §5, condition_classes.md). The condition contributes a zero LHS and a RHS that is zero
+/// docs/theory/contact_residuals.md §11, docs/registered_conditions.md). The condition contributes a zero LHS and a RHS
+/// that is zero
 /// except for the explicit Coulomb slip force (SLIP condition, SLIP slave nodes); the contact itself is the
 /// ContactMasterSlaveConstraint stored in its CONSTRAINT_POINTER value, u_s = T u_m + c on the DISPLACEMENT DoFs,
 /// which the condition rebuilds from Q = D⁻¹M (current configuration, dual basis when Ae succeeds) in
@@ -93,7 +94,7 @@ public:
     void Save(Serializer& rSerializer) const override;
     void Load(Serializer& rSerializer) override;
 
-    /// @brief T and c of the pair before pruning (kratos_residuals.md §5.2), from the current coordinates.
+    /// @brief T and c of the pair before pruning (docs/theory/contact_residuals.md §11), from the current coordinates.
     /// @throws InputError if an active slave node has no positive NODAL_PAUX
     MPCConstraintRelation ComputeConstraintRelation(const ProcessInfo& rCurrentProcessInfo) const;
     /// @brief Q = D⁻¹M of the pair (exposed for the tests). The reference zeroes a row with a negative entry; the dual

@@ -9,7 +9,7 @@ namespace contact_app {
 /// geometry is a CouplingGeometry {slave, master}; without one (an .mdpa-created condition) it is the slave
 /// face alone and Check() fails. The unit normal of the master face at its centre is cached in
 /// mPairedNormal: refreshed in Initialize / InitializeSolutionStep and, when CONSIDER_NORMAL_VARIATION ≠ 0
-/// (NO_DERIVATIVES_COMPUTATION), in InitializeNonLinearIteration. Reference: condition_classes.md.
+/// (NO_DERIVATIVES_COMPUTATION), in InitializeNonLinearIteration. Names and sizes: docs/registered_conditions.md.
 class PairedCondition : public Condition {
 public:
     /// @param[in] geometry a CouplingGeometry {slave, master} or a bare slave face (shared, not null)

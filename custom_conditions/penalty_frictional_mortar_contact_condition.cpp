@@ -6,11 +6,12 @@ namespace {
 
 using namespace frictional_detail;
 
-/// RHS of kratos_residuals.md §3.5 with B2 fixed, q = [u2 (d·n_m), u1 (d·n_s)]: S_j[δ_j(ε_j g̃_j n_j + τ_j)] on the
+/// RHS of docs/theory/contact_residuals.md §7, q = [u2 (d·n_m), u1 (d·n_s)]: S_j[δ_j(ε_j g̃_j n_j + τ_j)] on the
 /// active nodes, nothing on the inactive ones. The tangential traction is a return map (docs/theory/mortar.md §8) on
 /// the elastic slip e_j = TANGENT_SLIP carried over from the previous steps plus the slip of the step: stick
 /// τ = κε(P e_j + s_j), slip τ = −μ ε g̃_j t_j along the nodal trial t = (P e + T̂)/|P e + T̂|, T̂ the transmitted slip
-/// Σ_c ω^c s^c (§7: what the stick rows of all pairs transmit, as Q for the normal), so that every pair transmits
+/// Σ_c ω^c s^c (docs/theory/mortar.md §7: what the stick rows of all pairs transmit, as Q for the normal), so that
+/// every pair transmits
 /// |τ| = μ |ε g̃|.
 template <class T, int TDim, int TNS, int TNM, class TState, class TVector>
 void AddPenaltyFrictionalResidual(const TState& s, const FrictionalParameters<TDim, TNS>& p,

@@ -6,7 +6,7 @@
 
 namespace contact_app {
 
-/// Penalty frictional (Coulomb) mortar contact, displacement DoFs only (kratos_residuals.md §3.5). With
+/// Penalty frictional (Coulomb) mortar contact, displacement DoFs only (docs/theory/contact_residuals.md §7). With
 /// g̃_j = −n_j·(D x1 − M x2)_j, an active node adds S_j[δ_j(ε_j g̃_j n_j + τ_j)], τ_j = −μ_j ε_j g̃_j t_j (SLIP) or
 /// κ ε_j s_j (stick), s_j the objective or non-objective slip of the step (switch on OPERATOR_THRESHOLD recorded
 /// in MODIFIED, as the ALM family); inactive nodes add nothing. ε = INITIAL_PENALTY, δ = DYNAMIC_FACTOR,

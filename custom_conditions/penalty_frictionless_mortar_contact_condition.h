@@ -5,7 +5,7 @@
 
 namespace contact_app {
 
-/// Penalty frictionless mortar contact, displacement DoFs only (kratos_residuals.md §3.4). With
+/// Penalty frictionless mortar contact, displacement DoFs only (docs/theory/contact_residuals.md §6). With
 /// g̃_j = −n_j·(D x1 − M x2)_j, the augmented pressure of an active node is λ̄_j = ε_j g̃_j and
 /// RHS_u1,k += δ_j λ̄_j D_jk n_j, RHS_u2,l −= δ_j λ̄_j M_jl n_j; an inactive node contributes nothing (its rows
 /// and columns stay zero). ε_j = INITIAL_PENALTY and δ_j = DYNAMIC_FACTOR (nodal, non-historical; δ = 1 when
@@ -37,7 +37,7 @@ public:
     /// Adds the pair's weighted gap g̃ to the historical WEIGHTED_GAP and D_jj (= ∫Φ_j N_j, dual basis only) to
     /// the non-historical NODAL_AREA of the slave nodes (or flags ISOLATED). Unlike the reference, whose penalty
     /// explicit contribution hard-codes the plane case, the axisymmetric variant weights both by 2π r / t, as its
-    /// implicit operators (kratos_residuals.md §3.7).
+    /// implicit operators (docs/theory/contact_residuals.md §9).
     void AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) override;
 
 protected:

@@ -6,7 +6,7 @@ namespace contact_app {
 class ModelPart;
 
 /// Adaptive nodal ALM penalty (Kratos AALMAdaptPenaltyValueProcess after Bussetta, Marceau and Ponthot,
-/// kratos_cpp_internals.md §7.3, reproduced as coded). For every node with NODAL_AREA A > machine ε:
+/// docs/theory/contact_strategies.md §5, reproduced as coded). For every node with NODAL_AREA A > machine ε:
 /// g = g̃/A, g_old = g̃(previous step)/A, g_max = MAX_GAP_FACTOR·NODAL_H, ε_prev = ProcessInfo INITIAL_PENALTY at
 /// step 1 / iteration 1, else the nodal value. Sign change (g·g_old < 0): ε = |ε_prev g_old/g (|g|+g_max)/(g−g_old)|
 /// if |g_old| > g_max, else |ε_prev g_old/(10 g)|. Else, if |g| > g_max: ε = 2ε_prev when |g − g_old| >

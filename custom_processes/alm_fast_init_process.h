@@ -5,7 +5,8 @@ namespace contact_app {
 
 class ModelPart;
 
-/// Start-of-analysis reset of the contact part (Kratos ALMFastInit, kratos_cpp_internals.md §7.2): renumbers the
+/// Start-of-analysis reset of the contact part (Kratos ALMFastInit, docs/theory/contact_strategies.md §5): renumbers
+/// the
 /// root conditions 1..N (in id order, so every container stays sorted); on every slave node (SLAVE, or SLAVE not
 /// defined) WEIGHTED_GAP = 0 (and WEIGHTED_SLIP = 0 when frictional), nodal INITIAL_PENALTY = ProcessInfo value,
 /// DYNAMIC_FACTOR = 1, AUGMENTED_NORMAL_CONTACT_PRESSURE = 0 (and AUGMENTED_TANGENT_CONTACT_PRESSURE = 0); condition

@@ -6,7 +6,7 @@ namespace contact_app {
 class ModelPart;
 
 /// Automatic ALM penalty ε and scale factor k from the interface stiffness (Kratos ALMVariablesCalculationProcess,
-/// kratos_cpp_internals.md §7.1). Over the non-paired conditions of the contact part, per side s ∈ {slave,
+/// docs/theory/contact_strategies.md §5). Over the non-paired conditions of the contact part, per side s ∈ {slave,
 /// master} (a condition with neither flag counts for both): Ē_s = Σ E_c A_c / (Σ A_c + 1e−12) and
 /// h̄_s = Σ_c Σ_nodes NODAL_H·A_c/n_c / (Σ A_c + 1e−12), with E_c = YOUNG_MODULUS of the condition's properties,
 /// else of the solid element the face bounds (the reference uses 0 and then a penalty of 1), and A_c its DomainSize. ε_s = f Ē_s/(h̄_s + 1e−12), k_s = p f Ē_s/(h̄_s + 1e−12)

@@ -5,8 +5,9 @@ namespace contact_app {
 
 class ModelPart;
 
-/// Share of the step a slave node spends in contact (Kratos ComputeDynamicFactorProcess, kratos_cpp_internals.md
-/// §7.4, done right): a node that goes from open to penetrated during the step (g < 0 ≤ g_old, with g, g_old the
+/// Share of the step a slave node spends in contact (Kratos ComputeDynamicFactorProcess,
+/// docs/theory/contact_strategies.md
+/// §5, done right): a node that goes from open to penetrated during the step (g < 0 ≤ g_old, with g, g_old the
 /// current and previous-step historical WEIGHTED_GAP) gets DYNAMIC_FACTOR = min(1, |g| / |g − g_old|), the linear
 /// estimate of the fraction of the step after impact; every other slave node gets 1. The reference compares
 /// g_old with itself ([BUG]) and so always leaves 1. Slave = SLAVE, or SLAVE not defined (as ALMFastInit).

@@ -17,7 +17,7 @@ namespace contact_app {
 class IndexMap;
 
 /// The mortar contact search (Kratos AdvancedContactSearchProcess; `simple_search` = SimpleContactSearchProcess;
-/// kratos_cpp_internals.md §6). Each step: nodal mean normals of <main>.Contact[.ContactSub<id>]; a kd-tree over
+/// docs/theory/contact_search.md). Each step: nodal mean normals of <main>.Contact[.ContactSub<id>]; a kd-tree over
 /// the master face centres; per slave face the candidates in a radius / box (+ OBB filter), checked (not itself,
 /// opposite orientation, not yet paired, no reciprocal pair); INDEX_MAP of the slave face records master id →
 /// pair condition id; pair conditions `<condition_name>Condition<d>D<n>N<final_string>` from Registry<Condition> go
@@ -71,7 +71,7 @@ public:
     void InitializeMortarConditions();
     /// ResetContactOperators, then zero the multipliers of the inactive slave nodes.
     void ClearMortarConditions();
-    /// The search of the step: normals, candidates, pairs, gaps, active set (§6.4).
+    /// The search of the step: normals, candidates, pairs, gaps, active set (docs/theory/contact_search.md §1).
     void UpdateMortarConditions();
     /// Pair reuse: erase the pair conditions no longer ACTIVE (all of them when the main part is MODIFIED)
     /// and their INDEX_MAP entries; candidates without condition are dropped too.

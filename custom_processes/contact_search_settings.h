@@ -21,8 +21,8 @@ CheckGap ParseCheckGap(const std::string& name);
 std::string SearchTreeTypeName(SearchTreeType type);
 std::string CheckGapName(CheckGap check);
 
-/// Settings of ContactSearchProcess / MPCContactSearchProcess (kratos_cpp_internals.md §6.1; defaults of the
-/// reference's C++ process, which the Python SearchBaseProcess overrides with its own, python_layer §7.1).
+/// Settings of ContactSearchProcess / MPCContactSearchProcess (docs/theory/contact_search.md §5; defaults of the
+/// reference's C++ process, which the Python SearchBaseProcess overrides with its own).
 struct ContactSearchSettings {
     std::size_t allocation_size = 1000;  ///< max candidates per slave face (Python max_number_results)
     std::size_t bucket_size = 4;         ///< points per kd-tree leaf

@@ -5,7 +5,7 @@
 
 namespace contact_app {
 
-/// The contact search of the MPC route (Kratos MPCContactSearchProcess, kratos_cpp_internals.md §6.8): the
+/// The contact search of the MPC route (Kratos MPCContactSearchProcess, docs/theory/contact_search.md §6): the
 /// same search; each new pair condition also gets an empty "ContactMasterSlaveConstraint" from
 /// Registry<MasterSlaveConstraint> (id = max constraint id + 1, ACTIVE, initialised, added to the computing
 /// part), stored in the condition's CONSTRAINT_POINTER; the condition is flagged SLIP when the main part is

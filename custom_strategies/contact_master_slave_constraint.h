@@ -6,7 +6,7 @@
 namespace contact_app {
 
 /// The multipoint constraint of the MPC contact route (Kratos ContactMasterSlaveConstraint,
-/// kratos_cpp_internals.md §11.1): a LinearMasterSlaveConstraint u_s = T u_m + c whose DoF lists, T and c are
+/// docs/theory/contact_strategies.md §3): a LinearMasterSlaveConstraint u_s = T u_m + c whose DoF lists, T and c are
 /// rewritten by the MPCMortarContactCondition that holds it in its CONSTRAINT_POINTER value (SetDofList +
 /// SetLocalSystem in the condition's life-cycle hooks). It starts empty; the search toggles ACTIVE.
 /// Registered as "ContactMasterSlaveConstraint" (RegisterContactMasterSlaveConstraints).

@@ -31,7 +31,7 @@ struct ContactCriteriaTolerances {
 };
 
 /// Convergence of a displacement–multiplier (mortar contact) system by blocks (Kratos
-/// DisplacementLagrangeMultiplier[Residual|Mixed][Frictional]ContactCriteria, kratos_cpp_internals.md §9).
+/// DisplacementLagrangeMultiplier[Residual|Mixed][Frictional]ContactCriteria, docs/theory/contact_strategies.md §4).
 /// Displacement DoFs are DISPLACEMENT_X/Y/Z (and ROTATION_*); multiplier DoFs LAGRANGE_MULTIPLIER_CONTACT_PRESSURE,
 /// VECTOR_LAGRANGE_MULTIPLIER_X/Y/Z and SCALAR_LAGRANGE_MULTIPLIER; other DoFs count with the displacements. Only free,
 /// unconstrained equations count. Residual ratios are ‖r‖ / ‖r₀‖ with r₀ the larger of the step-start residual and

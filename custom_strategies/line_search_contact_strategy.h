@@ -8,7 +8,7 @@
 namespace contact_app {
 
 /// The contact Newton strategy with a block line search (Kratos LineSearchContactStrategy, registered
-/// `line_search_contact_strategy`, kratos_cpp_internals.md §8.2). After each solve the residual is evaluated at
+/// `line_search_contact_strategy`, docs/theory/contact_strategies.md §2). After each solve the residual is evaluated at
 /// 0, ½ and 1 times the increment and split into the displacement and the multiplier blocks; per block a parabola
 /// through the three norms gives the step length α (its minimum when convex, clamped to [α_min, 1]; otherwise 1
 /// if the full step did not increase the norm, else α_min). The increment of each block is then scaled by its α.

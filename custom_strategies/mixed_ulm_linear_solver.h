@@ -9,7 +9,7 @@
 namespace contact_app {
 
 /// Static condensation of the dual Lagrange multipliers of the active slave nodes (Kratos MixedULMLinearSolver,
-/// kratos_cpp_internals.md §10), on top of any inner solver.
+/// docs/theory/condensation.md), on top of any inner solver.
 ///
 /// Each free VECTOR_LAGRANGE_MULTIPLIER component λ_e of an ACTIVE SLAVE node is paired with the free DISPLACEMENT
 /// component of the same node and direction (row s(e)). With the dual basis the coupling K_{s(e),e} is the only

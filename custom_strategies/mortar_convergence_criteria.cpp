@@ -110,7 +110,8 @@ bool BaseMortarConvergenceCriteria::PreCriteria(ModelPart& rModelPart, DofsArray
                                                 const SystemVectorType&, const SystemVectorType&) {
     const ProcessInfo& info = rModelPart.GetProcessInfo();
     const int normal_variation = info.Has(CONSIDER_NORMAL_VARIATION) ? info.GetValue(CONSIDER_NORMAL_VARIATION) : 0;
-    // Normals move inside the step only with normal variation (kratos_residuals.md §1); the slip directions follow
+    // Normals move inside the step only with normal variation (docs/theory/contact_strategies.md §1); the slip
+    // directions follow
     // every iteration. Moving the normals of a stiff penalty interface each iteration kept its Newton from converging.
     if (normal_variation != 0)
         UpdateNormalsAndTangents(rModelPart);

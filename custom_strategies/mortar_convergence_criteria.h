@@ -12,7 +12,8 @@ namespace contact_app {
 void UpdateContactNormals(ModelPart& rModelPart);
 
 /// The active-set (and stick/slip) convergence of a mortar contact formulation (Kratos
-/// BaseMortarConvergenceCriteria and its family criteria, kratos_cpp_internals.md §9, kratos_residuals.md §6).
+/// BaseMortarConvergenceCriteria and its family criteria, docs/theory/contact_strategies.md §4,
+/// docs/theory/active_set.md).
 /// It is combined with the user's criterion by AND: a step converges when the unknowns do and the sets stop
 /// changing.
 /// - InitializeSolutionStep: mean nodal normals of the "Contact" part, condition NORMALs of the pairs, the pairs'
@@ -64,7 +65,8 @@ public:
     std::size_t NonDissipativeNodes() const { return mNonDissipativeNodes; }
 
     /// Recomputes the nodal mean normals of "Contact", the NORMAL of every pair and, for the frictional families,
-    /// the nodal slip direction TANGENT_XI (kratos_residuals.md §3.3.3). Public for the strategies and tests.
+    /// the nodal slip direction TANGENT_XI (docs/theory/contact_residuals.md §2, docs/theory/active_set.md §3). Public
+    /// for the strategies and tests.
     void UpdateNormalsAndTangents(ModelPart& rModelPart) const;
     /// Only the nodal slip directions TANGENT_XI of the frictional families.
     void UpdateTangents(ModelPart& rModelPart) const;

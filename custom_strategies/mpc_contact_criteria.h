@@ -8,7 +8,7 @@
 namespace contact_app {
 
 /// Active-set (and stick/slip) convergence of the MPC contact route (Kratos MPCContactCriteria,
-/// kratos_cpp_internals.md §9, kratos_residuals.md §6 "MPC"). For each SLAVE node of "Contact":
+/// docs/theory/active_set.md §4). For each SLAVE node of "Contact":
 /// \f$ p = (F\cdot n)/A_\ell \f$, ACTIVE ⇔ \f$ p < -f_R E \f$ or \f$ \tilde g/A < -10^{-10} h \f$ (h = NODAL_H, else
 /// \f$\sqrt{A_\ell}\f$: a gap just closed by the constraint is zero up to round-off), with F the contact force,
 /// n = NORMAL, \f$A_\ell\f$ = NODAL_MAUX (lumped slave area, computed if absent), \f$f_R\f$ =

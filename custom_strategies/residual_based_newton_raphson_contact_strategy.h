@@ -12,7 +12,7 @@ struct ContactStrategySettings {
 };
 
 /// Newton–Raphson for mortar contact (Kratos ResidualBasedNewtonRaphsonContactStrategy,
-/// kratos_cpp_internals.md §8.1, data flow §12).
+/// docs/theory/contact_strategies.md §1).
 /// - Predict: only what the step prescribes (the scheme's PredictPrescribed: free DoFs stay at the last converged
 ///   state, as the reference's contact strategy, which does not call the scheme's predictor; extrapolating a body
 ///   about to touch or slide pushes it through the other and can invert the elements next to a driven face), then

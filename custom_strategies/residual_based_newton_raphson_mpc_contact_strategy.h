@@ -20,7 +20,8 @@ struct MPCContactStrategySettings {
 };
 
 /// Newton–Raphson for the MPC contact route (Kratos ResidualBasedNewtonRaphsonMPCContactStrategy,
-/// kratos_cpp_internals.md §8.3). The contact is a set of ContactMasterSlaveConstraints u_s = T u_m + c living in
+/// docs/theory/contact_strategies.md §3). The contact is a set of ContactMasterSlaveConstraints u_s = T u_m + c living
+/// in
 /// "ComputingContact" (a sub model part of the assembled part, so the builder sees them); the criterion
 /// (And(structural, MPCContactCriteria)) switches pairs and constraints on and off.
 /// - InitializeSolutionStep: nodal weights NODAL_PAUX (number of SLAVE conditions of "Contact" holding the node),

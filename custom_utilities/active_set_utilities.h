@@ -12,7 +12,7 @@ class ModelPart;
 class ProcessInfo;
 
 /// Semi-smooth Newton active-set and stick/slip updates of the mortar contact families (Kratos
-/// ActiveSetUtilities, kratos_cpp_internals.md §5.3, kratos_residuals.md §6). Each function evaluates the
+/// ActiveSetUtilities, docs/theory/active_set.md). Each function evaluates the
 /// SLAVE nodes of the sub model part "Contact" of @p model_part (of @p model_part itself when it has no such
 /// child), writes AUGMENTED_NORMAL_CONTACT_PRESSURE (and AUGMENTED_TANGENT_CONTACT_PRESSURE for friction) as
 /// non-historical values and returns the number of flips (0 = the set converged). Nothing is evaluated (0 is

@@ -10,7 +10,7 @@ class Dof;
 class ModelPart;
 class Node;
 
-/// Model-part level helpers of the contact workflow (Kratos ContactUtilities, kratos_cpp_internals.md §5.2):
+/// Model-part level helpers of the contact workflow (Kratos ContactUtilities, docs/theory/contact_strategies.md §1):
 /// nodal mesh sizes, the explicit refresh of the weighted gaps, the predicted step jump and activity checks.
 /// NODAL_H is read from the historical database when the model part stores it, else from the node's
 /// non-historical values (NodalH()). Differences from the reference: CalculateMinimalNodalH is a true minimum

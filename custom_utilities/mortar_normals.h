@@ -25,13 +25,13 @@ template <int TDim, int TNumNodes, class T>
 SpatialVector<T, TDim> FaceUnitNormal(const NodeCoordinates<T, TDim, TNumNodes>& x,
                                       const Eigen::Matrix<double, TDim - 1, 1>& local);
 
-/// @brief FaceUnitNormal at the reference centre (the condition NORMAL of §5.1).
+/// @brief FaceUnitNormal at the reference centre (the condition NORMAL, docs/theory/mortar.md §5).
 template <int TDim, int TNumNodes, class T>
 SpatialVector<T, TDim> FaceCenterUnitNormal(const NodeCoordinates<T, TDim, TNumNodes>& x);
 
 /// @brief FaceUnitNormal of this face at each of its nodes (row i = node i): the NV linearisation of the
-///        nodal normals restricted to the face's own geometry (kratos_cpp_internals.md §3.2, with the exact
-///        derivative (δa − n(n·δa))/|a| of §3.1 instead of the coded one [BUG?]).
+///        nodal normals restricted to the face's own geometry (docs/theory/mortar.md §5, with the exact
+///        derivative (δa − n(n·δa))/|a| instead of the coded one [BUG?]).
 template <int TDim, int TNumNodes, class T>
 NodeCoordinates<T, TDim, TNumNodes> FaceNodalUnitNormals(const NodeCoordinates<T, TDim, TNumNodes>& x);
 

@@ -35,7 +35,7 @@ template <class T, int TDim>
 using SpatialVector = Eigen::Matrix<T, TDim, 1>;
 
 /// One integration cell: TDim vertices in slave local coordinates (ξ in 2D, (ξ, η) in 3D) and, per vertex,
-/// its PointBelongs tag (kratos_cpp_internals.md §1.1): v < n_s slave node v; n_s ≤ v < B master node v−n_s;
+/// its PointBelongs tag (docs/theory/mortar.md §1): v < n_s slave node v; n_s ≤ v < B master node v−n_s;
 /// B generic intersection (tessellation centroid); v > B edge–edge intersection B + 10·s0 + 100·s1 +
 /// 1000·m0 + 10000·m1.
 template <class T, int TDim>

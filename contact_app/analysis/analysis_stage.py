@@ -1,6 +1,6 @@
 """Kratos-style analysis stage: the life cycle of a simulation (Kratos ``analysis_stage``).
 
-Order of the calls (``kratos_python_layer.md`` §1.4):
+Order of the calls (``docs/input_layer.md`` §1):
 
 * ``Initialize``: modelers → ``solver.ImportModelPart`` → ``PrepareModelPart`` → ``AddDofs`` →
   ``ModifyInitialProperties`` → ``ModifyInitialGeometry`` → processes created → every process

@@ -26,7 +26,7 @@ Setter Field(T ContactSearchSettings::*member) {
     return [member](ContactSearchSettings& settings, const py::handle& value) { settings.*member = value.cast<T>(); };
 }
 
-/// Every settings key (the §6.1 names) and how to store it; the octree keys may also come nested in
+/// Every settings key (docs/theory/contact_search.md §5) and how to store it; the octree keys may also come nested in
 /// "octree_search_parameters".
 const std::map<std::string, Setter>& SettingsKeys() {
     static const std::map<std::string, Setter> keys = {

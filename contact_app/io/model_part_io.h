@@ -9,7 +9,7 @@ namespace contact_app {
 
 /// Reader of Kratos `.mdpa` files (Kratos ModelPartIO, read side).
 ///
-/// Grammar (../shared/spec/kratos_python_layer.md §9): `Begin <Block> [args]` … `End <Block>` with
+/// Grammar (docs/input_layer.md §5): `Begin <Block> [args]` … `End <Block>` with
 /// ModelPartData, Properties (with nested Table), Table, Nodes, Geometries, Elements, Conditions,
 /// Constraints, NodalData, ElementalData, ConditionalData and nested SubModelPart blocks;
 /// `//` comments anywhere. Every error is an InputError naming the file, the line and what was expected.

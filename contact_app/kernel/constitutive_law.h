@@ -18,7 +18,7 @@ class ProcessInfo;
 ///
 /// Voigt orders (engineering shear strains γ = 2ε, plain shear stresses):
 /// plane [xx, yy, xy] (size 3), axisymmetric [rr, zz, θθ, rz] (size 4),
-/// 3D [xx, yy, zz, xy, yz, xz] (size 6). See ../shared/spec/kratos_structural.md §0, §3.
+/// 3D [xx, yy, zz, xy, yz, xz] (size 6). See docs/theory/structural.md §1, §4.
 class ConstitutiveLaw {
 public:
     using Pointer = std::shared_ptr<ConstitutiveLaw>;

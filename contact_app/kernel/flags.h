@@ -82,7 +82,7 @@ struct NamedFlag {
     Flags flag;
 };
 
-// Bit positions follow kratos_flags.h (../shared/spec/variables.md §4.1).
+// Bit positions of Kratos' global flags (docs/input_layer.md §6).
 #define CONTACT_APP_FLAGS(X)                                                                   \
     X(STRUCTURE, 32) X(FLUID, 33) X(THERMAL, 34) X(MARKER, 35) X(BLOCKED, 36) X(INLET, 37)      \
     X(OUTLET, 38) X(SLAVE, 39) X(MASTER, 40) X(ISOLATED, 41) X(INTERACTION, 42) X(TO_REFINE, 43) \

@@ -13,7 +13,7 @@ class MasterSlaveConstraint;
 class TableStreamUtility;
 
 // Kernel (Kratos core) and structural (Kratos StructuralMechanicsApplication) variables, with their
-// Kratos names and types (../shared/spec/variables.md §2). One table declares and defines them.
+// Kratos names and types (docs/input_layer.md §6). One table declares and defines them.
 
 /// Scalar, vector, matrix, string and pointer variables: X(type, NAME). RESTART_PROCESS_STATES is contact_app's own:
 /// the JSON state of the Python processes (output counters, search state) that a restart file carries in the

@@ -1,6 +1,6 @@
 """Base classes of every process: the Kratos life-cycle hooks (``Process``, ``OutputProcess``).
 
-The analysis calls the hooks in this order (``kratos_python_layer.md`` §1.4): ``ExecuteInitialize``
+The analysis calls the hooks in this order (``docs/input_layer.md`` §1): ``ExecuteInitialize``
 and ``Check`` once, ``ExecuteBeforeSolutionLoop`` once, then per step
 ``ExecuteInitializeSolutionStep`` → solve → ``ExecuteFinalizeSolutionStep``, then
 ``ExecuteBeforeOutputStep`` / ``PrintOutput`` / ``ExecuteAfterOutputStep`` when some output process

@@ -1,7 +1,7 @@
 """Settings helpers shared by the contact processes: the ``"0"``…``"9"`` pair blocks and errors.
 
 Kratos writes every per-pair setting as an object with the fixed keys ``"0"`` to ``"9"``
-(``kratos_python_layer.md`` §7.1); a key outside that set is an unknown key, as in Kratos.
+(``docs/input_layer.md`` §3); a key outside that set is an unknown key, as in Kratos.
 """
 
 from __future__ import annotations

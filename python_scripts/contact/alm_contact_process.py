@@ -1,6 +1,6 @@
 """``alm_contact_process``: augmented-Lagrangian mortar contact (Kratos ``ALMContactProcess``).
 
-Keys and defaults: ``kratos_python_layer.md`` §7.2. On top of the search base it chooses the
+Overview: ``docs/input_layer.md`` §4. On top of the search base it chooses the
 condition stem from ``contact_type``, ``normal_variation`` and ``alternative_formulations``, writes
 the ALM constants into the ProcessInfo (penalty ε and scale factor k, automatic from Young's modulus
 and the nodal size unless ``manual_ALM``), the per-pair friction coefficients into the pair

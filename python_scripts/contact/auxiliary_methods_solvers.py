@@ -1,7 +1,7 @@
 """What the contact solvers add to the structural ones (Kratos ``auxiliary_methods_solvers``).
 
 ``contact_settings`` defaults and checks, the historical variables and DoFs of each
-``mortar_type`` (``kratos_python_layer.md`` §6.1–6.3) and the mixin the static and implicit
+``mortar_type`` (``docs/input_layer.md`` §2) and the mixin the static and implicit
 dynamic contact solvers share.
 """
 
@@ -140,7 +140,7 @@ class ForcedSettings:
 
 
 def mortar_variables(mortar_type: str) -> list[Any]:
-    """Historical variables a mortar_type needs besides the structural ones (§6.3)."""
+    """Historical variables a mortar_type adds to the structural ones (docs/input_layer.md)."""
     variables = [ca.NORMAL, ca.NODAL_H]
     if mortar_type == "ALMContactFrictionless":
         variables += [
@@ -169,7 +169,7 @@ def mortar_variables(mortar_type: str) -> list[Any]:
 
 
 def mortar_dofs(mortar_type: str) -> list[tuple[Any, Any]]:
-    """(DoF, reaction) pairs a mortar_type adds to every node (§6.3)."""
+    """(DoF, reaction) pairs a mortar_type adds to every node (docs/input_layer.md §2)."""
     vector = [
         (ca.VECTOR_LAGRANGE_MULTIPLIER_X, ca.WEIGHTED_VECTOR_RESIDUAL_X),
         (ca.VECTOR_LAGRANGE_MULTIPLIER_Y, ca.WEIGHTED_VECTOR_RESIDUAL_Y),

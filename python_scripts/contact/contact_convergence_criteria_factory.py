@@ -1,8 +1,9 @@
 """Convergence criteria of the contact solvers (Kratos ``contact_convergence_criteria_factory``).
 
-``kratos_python_layer.md`` §6.5. The user's criterion judges the unknowns; it is combined (AND)
-with the mortar criterion of the ``mortar_type``, which updates the active (and stick/slip) set
-after every iteration and reports convergence when the set no longer changes.
+See ``docs/theory/contact_strategies.md`` §4 and ``docs/input_layer.md`` §2. The user's criterion
+judges the unknowns; it is combined (AND) with the mortar criterion of the ``mortar_type``, which
+updates the active (and stick/slip) set after every iteration and reports convergence when the set
+no longer changes.
 
 | ``convergence_criterion`` | displacement block | multiplier block |
 |---|---|---|

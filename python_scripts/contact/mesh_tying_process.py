@@ -1,6 +1,6 @@
 """``mesh_tying_process``: mortar mesh tying of non-matching meshes (Kratos ``MeshTyingProcess``).
 
-Keys and defaults: ``kratos_python_layer.md`` §7.5. The pairs are searched once (the default
+Overview: ``docs/input_layer.md`` §4. The pairs are searched once (the default
 ``database_step_update`` is 999999999) and the tied variable, ``variable_name`` (a double →
 scalar multiplier, a 3-vector → vector multiplier), goes into the pair property TYING_VARIABLE.
 """

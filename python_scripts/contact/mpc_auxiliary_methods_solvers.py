@@ -1,9 +1,10 @@
 """What the MPC contact solvers add to the structural ones (Kratos ``mpc_contact_structural_*``).
 
-``mpc_contact_settings`` defaults and checks (``kratos_python_layer.md`` §6.1), the historical
+``mpc_contact_settings`` defaults and checks (``docs/input_layer.md`` §2), the historical
 variables of the MPC route, the elimination builder (which honours the contact constraints and
 writes the reactions the active-set criterion reads), ``And(structural, MPCContactCriteria)`` and
-the MPC contact Newton strategy (§6.6). Shared by the static and implicit dynamic MPC solvers.
+the MPC contact Newton strategy (``docs/theory/contact_strategies.md`` §3). Shared by the static and
+implicit dynamic MPC solvers.
 """
 
 from __future__ import annotations
@@ -40,7 +41,7 @@ MPC_FORCED_SOLVER_SETTINGS = ("compute_reactions", "reform_dofs_at_each_step", "
 
 
 def mpc_variables(contact_type: str) -> list[Any]:
-    """Historical variables of the MPC route besides the structural ones (§6.3)."""
+    """Historical variables of the MPC route besides the structural ones (docs/input_layer.md)."""
     variables = [ca.NORMAL, ca.NODAL_H, ca.WEIGHTED_GAP]
     if contact_type == "Frictional":
         variables.append(ca.WEIGHTED_SLIP)
@@ -175,7 +176,7 @@ class MPCContactSolverMixin(SolverMixinBase):
             )
         simplified = self.settings["mpc_contact_settings"]["simplified_semi_smooth_newton"]
         # The MPC route uses the opposite convention of the mortar solvers: INTERACTION on the
-        # ProcessInfo selects the outer active-set loop (kratos_python_layer.md §6.6).
+        # ProcessInfo selects the outer active-set loop (docs/theory/contact_strategies.md §3).
         self.main_model_part.ProcessInfo.Set(ca.INTERACTION, simplified.GetBool())
         super().Initialize()
 

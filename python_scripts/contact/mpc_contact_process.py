@@ -1,6 +1,6 @@
 """``mpc_contact_process``: contact through multipoint constraints (Kratos ``MPCContactProcess``).
 
-Keys and defaults: ``kratos_python_layer.md`` §7.6. Each pair gets an ``MPCMortarContactCondition``
+Overview: ``docs/input_layer.md`` §4. Each pair gets an ``MPCMortarContactCondition``
 and a ``ContactMasterSlaveConstraint`` (created by the MPC search); the condition refreshes the
 constraint in its life-cycle hooks. ``contact_type`` Frictionless, Frictional (SLIP flag) or
 MeshTying (RIGID flag).

@@ -1,6 +1,6 @@
 """``penalty_contact_process``: pure-penalty mortar contact (Kratos ``PenaltyContactProcess``).
 
-The ALM process without multipliers (``kratos_python_layer.md`` §7.3): the same keys with other
+The ALM process without multipliers (``docs/input_layer.md`` §4): the same keys with other
 defaults (``advance_ALM_parameters.penalty`` 1e16, ``max_gap_factor`` 5e-4, ``tangent_factor``
 1e-3), condition stems ``Penalty[NV]Frictionless|Frictional[Axisym]MortarContact``, no scale
 factor, and the automatic penalty ε = 1e4 · stiffness_factor · E / h (the reference's factor).

@@ -4,7 +4,7 @@ The process turns the interface parts named in the settings into the ``Contact``
 (skin conditions generated from the elements when a part holds only nodes, SLAVE / MASTER flags,
 one pair property per pair key), then drives one C++ search per pair key
 (``ContactSearchProcess``), which creates the paired mortar conditions in ``ComputingContact``.
-Facts and defaults: ``kratos_python_layer.md`` §7.1.
+Overview: ``docs/input_layer.md`` §3.
 
 Subclasses (ALM, penalty, mesh tying, MPC) name their settings keys, the condition stem and the
 values they push into the ProcessInfo and the properties through the ``_initialize_*`` hooks.
@@ -26,7 +26,7 @@ from ._pairs import PAIR_KEYS, fail, pair_block, string_lists
 
 logger = logging.getLogger("contact_app.contact")
 
-#: ``search_parameters`` defaults (§7.1).
+#: ``search_parameters`` defaults (docs/theory/contact_search.md §5).
 SEARCH_PARAMETERS_DEFAULTS: dict[str, Any] = {
     "type_search": "in_radius_with_obb",
     "simple_search": False,
@@ -241,7 +241,7 @@ class SearchBaseProcess(Process):
     # -- life cycle --
 
     def ExecuteInitialize(self) -> None:
-        """Build the Contact part, nodal sizes, properties and the searches (§7.1 steps 1–13)."""
+        """Build the Contact part, nodal sizes, properties and searches (docs/input_layer.md §3)."""
         main = self.main_model_part
         self.dimension = main.ProcessInfo[ca.DOMAIN_SIZE]
         if main.ProcessInfo[ca.IS_RESTARTED]:

@@ -1,7 +1,7 @@
 """Write the mesh of the frictional evolution-load oracle cases (our own model, plane strain).
 
 The reference suite's ``ALM_frictional_contact_test_2D/static_evolution_load_test`` and
-``evolution_load_test`` (../shared/spec/kratos_test_catalog.md rows 57 and 47: 60
+``evolution_load_test`` (of the 2019 Kratos contact test suite: 60
 SmallDisplacementElement2D4N, 20 LineLoadCondition2D2N) come without their meshes. This script
 writes a model of the same character: an elastic block [-1, 1] x [0, 0.5] (10 x 3 quads) on an
 elastic base [-1.5, 1.5] x [-0.5, 0] (15 x 2 quads), touching with zero gap, the interface nodes

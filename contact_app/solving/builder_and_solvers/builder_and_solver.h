@@ -27,7 +27,7 @@ struct BuilderAndSolverTimings {
 /// Derived classes decide the numbering and how Dirichlet DoFs are treated:
 /// BlockBuilderAndSolver keeps fixed DoFs in the system, EliminationBuilderAndSolver removes them.
 /// Master–slave constraints are applied through a global relation matrix T (A ← TᵀAT, b ← Tᵀb,
-/// Δx ← TΔx; ../shared/spec/kratos_structural.md §5.1); a constraint with a test relation W of its own
+/// Δx ← TΔx; docs/theory/structural.md §5); a constraint with a test relation W of its own
 /// (MasterSlaveConstraint::CalculateTestRelation) makes it A ← WᵀAT, b ← Wᵀb.
 class BuilderAndSolver {
 public:

@@ -6,7 +6,7 @@
 namespace contact_app {
 
 /// ‖Δx_free‖/‖x_free‖ ≤ relative tolerance or ‖Δx_free‖/√n_free < absolute tolerance
-/// (Kratos DisplacementCriteria, ../shared/spec/kratos_structural.md §6.1), or an increment at round-off:
+/// (Kratos DisplacementCriteria, docs/theory/structural.md §6), or an increment at round-off:
 /// ‖Δx_free‖ below the RoundOffBound floor of the state it corrects.
 class DisplacementCriteria : public ConvergenceCriteria {
 public:

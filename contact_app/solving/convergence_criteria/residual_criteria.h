@@ -7,7 +7,7 @@ namespace contact_app {
 
 /// ‖r‖/‖r₀‖ ≤ relative tolerance or ‖r‖/n < absolute tolerance over the free, unconstrained
 /// DoFs, with r₀ the larger of the residual assembled at the start of the step (Kratos ResidualCriteria,
-/// ../shared/spec/kratos_structural.md §6.2; the absolute norm divides by n, not √n, as Kratos) and the residual
+/// docs/theory/structural.md §6; the absolute norm divides by n, not √n, as Kratos) and the residual
 /// at the predicted state, before the first correction. A residual whose correction is at round-off
 /// (RoundOffBound) is converged too: neither test can be met reliably below it.
 class ResidualCriteria : public ConvergenceCriteria {

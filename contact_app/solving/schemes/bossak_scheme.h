@@ -8,7 +8,7 @@ namespace contact_app {
 /// Implicit Bossak–Newmark displacement scheme (Kratos ResidualBasedBossakDisplacementScheme;
 /// Newmark when α_m = 0). β = (1 − α_m)² β_N, γ = 1/2 − α_m.
 /// LHS = K + (1 − α_m) c₀ M + c₁ C, RHS = f − M[(1 − α_m) a_{n+1} + α_m a_n] − C v_{n+1}
-/// (../shared/spec/kratos_structural.md §4.2).
+/// (docs/theory/structural.md §5).
 class BossakScheme : public Scheme {
 public:
     /// @param damp_factor_m α_m ∈ [−0.5, 0] @param newmark_beta β_N (0.25 average acceleration)
@@ -50,7 +50,7 @@ private:
     double mAlphaM;
     double mBeta;
     double mGamma;
-    double mC[6] = {0, 0, 0, 0, 0, 0};  // c0..c5 of the spec
+    double mC[6] = {0, 0, 0, 0, 0, 0};  // c0..c5 of docs/theory/structural.md §5
 };
 
 }  // namespace contact_app

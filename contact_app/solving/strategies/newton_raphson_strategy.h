@@ -9,7 +9,7 @@
 namespace contact_app {
 
 /// Full Newton–Raphson with the LHS rebuilt every iteration (Kratos
-/// ResidualBasedNewtonRaphsonStrategy, ../shared/spec/kratos_structural.md §6.4): at most
+/// ResidualBasedNewtonRaphsonStrategy, docs/theory/structural.md §6): at most
 /// max_iterations linear solves per step; a step that does not converge is reported
 /// (LastStepConverged() == false, the norms in IterationHistory()) and left as it is — the caller
 /// decides whether to go on (Kratos does) or to cut the step.

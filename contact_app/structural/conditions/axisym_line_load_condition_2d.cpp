@@ -15,7 +15,7 @@ double AxisymLineLoadCondition2D::CircumferenceFactor(const Vector& N, Vector& r
     constexpr double two_pi = 6.283185307179586476925;  // 2π
     double radius = 0.0;
     for (Eigen::Index k = 0; k < N.size(); ++k) radius += N[k] * GetGeometry()[k].X();
-    // [BUG?] §2.5/§9.2: Kratos divides by THICKNESS here; the elements do not, so neither do we.
+    // docs/theory/structural.md §8 D2: Kratos divides by THICKNESS here; the elements do not, so neither do we.
     rDerivative = two_pi * N;
     return two_pi * radius;
 }

@@ -5,9 +5,9 @@
 
 namespace contact_app {
 
-/// Axisymmetric line load (spec §2.5): LineLoadCondition2D with the weight factor c = 2π r,
+/// Axisymmetric line load (docs/theory/structural.md §3): LineLoadCondition2D with the weight factor c = 2π r,
 /// r = Σ N_k x_k the current radius (x = r, y = z); loads are per unit meridian length, integrated over
-/// the full circumference. Kratos also divides by THICKNESS ([BUG?] §9.2); this class does not.
+/// the full circumference. Kratos also divides by THICKNESS (docs/theory/structural.md §8 D2); this class does not.
 /// Registers AxisymLineLoadCondition2D2N (Line2D2).
 class AxisymLineLoadCondition2D : public LineLoadCondition2D {
 public:

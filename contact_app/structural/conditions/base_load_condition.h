@@ -7,9 +7,9 @@
 
 namespace contact_app {
 
-/// Common part of the structural load conditions (spec §2.1): DISPLACEMENT_X/Y(/Z) DoFs node by node
+/// Common part of the structural load conditions (docs/theory/structural.md §3): DISPLACEMENT_X/Y(/Z) DoFs node by node
 /// (reactions REACTION_*), the local system RHS = f_ext, LHS = −∂f_ext/∂u, empty mass and damping
-/// (inherited), and the load sources shared by the line and surface loads (spec §2.6).
+/// (inherited), and the load sources shared by the line and surface loads (docs/theory/structural.md §3).
 /// Derived classes implement DofsPerNode() and CalculateAll(). Not registered itself.
 class BaseLoadCondition : public Condition {
 public:
@@ -46,10 +46,11 @@ protected:
     virtual void CalculateAll(Matrix* pLhs, Vector* pRhs, const ProcessInfo& rCurrentProcessInfo) const = 0;
 
     /// Pressure per node p_k = (PRESSURE + NEGATIVE_FACE_PRESSURE − POSITIVE_FACE_PRESSURE of the condition)
-    /// + (historical NEGATIVE_FACE_PRESSURE − POSITIVE_FACE_PRESSURE of node k, where stored), spec §2.3.
+    /// + (historical NEGATIVE_FACE_PRESSURE − POSITIVE_FACE_PRESSURE of node k, where stored),
+    /// docs/theory/structural.md §3.
     std::vector<double> NodalPressures() const;
     /// Historical @p variable of every node where stored; else the non-historical value when
-    /// @p non_historical_fallback (zero if absent); else zero (spec §2.6).
+    /// @p non_historical_fallback (zero if absent); else zero (docs/theory/structural.md §3).
     std::vector<Array3> NodalLoads(const Variable<Array3>& variable, bool non_historical_fallback) const;
 
 private:

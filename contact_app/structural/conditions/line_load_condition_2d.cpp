@@ -45,7 +45,8 @@ void LineLoadCondition2D::CalculateAll(Matrix* pLhs, Vector* pRhs, const Process
         if (pRhs != nullptr)
             for (Eigen::Index i = 0; i < n; ++i) pRhs->segment<2>(2 * i) += point.weight * factor * N[i] * force;
         if (pLhs == nullptr) continue;
-        // [BUG?] §2.3/§9.1: Kratos scales the pressure stiffness by det J·THICKNESS and drops the LINE_LOAD
+        // docs/theory/structural.md §8 D1: Kratos scales the pressure stiffness by det J·THICKNESS and drops the
+        // LINE_LOAD
         // term; this is the exact −∂f/∂u (changes only Newton convergence, not the converged state).
         const Eigen::Matrix2d load_by_tangent = load * (tangent / length).transpose();
         for (Eigen::Index j = 0; j < n; ++j) {

@@ -5,7 +5,7 @@
 
 namespace contact_app {
 
-/// Distributed load and follower pressure on a 2D line, on the current configuration (spec §2.3):
+/// Distributed load and follower pressure on a 2D line, on the current configuration (docs/theory/structural.md §3):
 /// f_i = Σ_g w_g c N_i (|t| q − p n),  t = ∂x/∂ξ, n = (t_y, −t_x) (outward for a counter-clockwise boundary),
 /// q = LINE_LOAD (condition + nodal, per unit current length), p = Σ N_k p_k (BaseLoadCondition::NodalPressures),
 /// c = 1 (CircumferenceFactor). LHS = −∂f/∂u, the consistent load stiffness of both terms.

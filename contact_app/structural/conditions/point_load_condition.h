@@ -5,7 +5,7 @@
 
 namespace contact_app {
 
-/// Nodal force f = P_cond + P_node (spec §2.2): P_cond the condition's POINT_LOAD, P_node the node's
+/// Nodal force f = P_cond + P_node (docs/theory/structural.md §3): P_cond the condition's POINT_LOAD, P_node the node's
 /// historical POINT_LOAD where stored; first TDim components. No load stiffness (zero LHS).
 /// Registers PointLoadCondition2D1N and PointLoadCondition3D1N (Point3D geometry).
 /// @tparam TDim 2 or 3: DoFs per node.

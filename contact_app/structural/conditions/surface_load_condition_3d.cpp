@@ -53,7 +53,8 @@ void SurfaceLoadCondition3D::CalculateAll(Matrix* pLhs, Vector* pRhs, const Proc
             for (Eigen::Index i = 0; i < n; ++i) pRhs->segment<3>(3 * i) += point.weight * N[i] * force;
         }
         if (pLhs == nullptr) continue;
-        // [BUG?] §2.4/§9.1: Kratos scales the pressure stiffness by det J and omits the SURFACE_LOAD term;
+        // docs/theory/structural.md §8 D1: Kratos scales the pressure stiffness by det J and omits the SURFACE_LOAD
+        // term;
         // this is the exact −∂f/∂u (changes only Newton convergence, not the converged state).
         const Eigen::Matrix3d dforce_dnormal = load * (normal / area).transpose() + pressure * Eigen::Matrix3d::Identity();
         const Eigen::Matrix3d cross_xi = CrossMatrix(t_xi), cross_eta = CrossMatrix(t_eta);

@@ -5,7 +5,7 @@
 
 namespace contact_app {
 
-/// Distributed load and follower pressure on a 3D surface, on the current configuration (spec §2.4):
+/// Distributed load and follower pressure on a 3D surface, on the current configuration (docs/theory/structural.md §3):
 /// f_i = Σ_g w_g N_i (|a| s + p a),  a = t_ξ × t_η (the geometry normal, right-hand rule on node order),
 /// s = SURFACE_LOAD (condition + historical nodal, per unit current area), p = Σ N_k p_k
 /// (BaseLoadCondition::NodalPressures): NEGATIVE_FACE_PRESSURE > 0 pushes along +a.

@@ -15,7 +15,7 @@ namespace contact_app::detail {
 
 namespace {
 
-// Spec §3.1: Kratos rejects 0.499 < ν < 0.501 and −1.01 < ν < −0.999; together with the
+// docs/theory/structural.md §4: Kratos rejects 0.499 < ν < 0.501 and −1.01 < ν < −0.999; together with the
 // mathematical range (−1, 0.5) that leaves [−0.999, 0.499].
 constexpr double kMinPoisson = -0.999;
 constexpr double kMaxPoisson = 0.499;

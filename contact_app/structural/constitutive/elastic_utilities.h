@@ -17,7 +17,7 @@ namespace detail {
 /// Kinematic model of an elastic law: selects the Voigt layout and the linear-elastic D.
 enum class ElasticModel { ThreeDimensional, PlaneStrain, PlaneStress, Axisymmetric };
 
-/// Voigt component → tensor index pair (i, j), i ≤ j, in the orders of spec §0:
+/// Voigt component → tensor index pair (i, j), i ≤ j, in the orders of docs/theory/structural.md §1:
 /// 3D [xx, yy, zz, xy, yz, xz]; plane [xx, yy, xy]; axisymmetric [rr, zz, θθ, rz].
 using VoigtPair = std::array<int, 2>;
 
@@ -41,11 +41,11 @@ const std::vector<VoigtPair>& VoigtPairs(int strain_size);
 /// @throws InputError if YOUNG_MODULUS or POISSON_RATIO is missing; InternalError without properties
 ElasticConstants ReadElasticConstants(const ConstitutiveLaw::Parameters& values, const std::string& law_name);
 /// @brief Shared Check of the elastic laws: YOUNG_MODULUS present and > 0, POISSON_RATIO present and
-///        within [−0.999, 0.499] (spec §3.1 bands), DENSITY ≥ 0 if present.
+///        within [−0.999, 0.499] (docs/theory/structural.md §4), DENSITY ≥ 0 if present.
 /// @throws InputError naming the law, the property id, the variable and the fix
 void CheckElasticProperties(const Properties& properties, const std::string& law_name);
 
-/// @brief Isotropic linear-elastic D (strain_size²) of the model, spec §3.2 (engineering shear).
+/// @brief Isotropic linear-elastic D (strain_size²) of the model, docs/theory/structural.md §4 (engineering shear).
 Matrix LinearElasticMatrix(ElasticModel model, double young, double poisson);
 
 /// @brief Symmetric strain tensor → Voigt vector, shear components doubled (γ = 2ε).

@@ -7,11 +7,12 @@
 
 namespace contact_app {
 
-/// Compressible Neo-Hookean law (spec §3.3): W = λ/2 (ln J)² − μ ln J + μ/2 (tr C − 3), J = determinant_f
+/// Compressible Neo-Hookean law (docs/theory/structural.md §4): W = λ/2 (ln J)² − μ ln J + μ/2 (tr C − 3), J =
+/// determinant_f
 /// as passed by the element, λ and μ the 3D Lamé constants.
 /// PK2: S = λ ln J C⁻¹ + μ (I − C⁻¹), ℂ = λ C⁻¹⊗C⁻¹ + (μ − λ ln J)(C⁻¹ ⊙ C⁻¹ sym.), E(F) written to strain_vector.
 /// Kirchhoff: τ = λ ln J I + μ (b − I), c = λ I⊗I + (μ − λ ln J)(2 𝕀); Cauchy: both / J; the Almansi strain
-/// is written unless the element provides strain (the correct reading of spec §9.4).
+/// is written unless the element provides strain (docs/theory/structural.md §8 D4).
 /// TDim = 2 is plane strain (2×2 F, F₃₃ = 1, strain size 3). Registers HyperElastic3DLaw,
 /// HyperElasticPlaneStrain2DLaw. The element's strain vector is never used for the stress (the law reads F).
 /// PK1 is rejected (ConfigurationError). @tparam TDim 2 or 3.

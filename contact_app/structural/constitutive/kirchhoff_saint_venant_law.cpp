@@ -40,7 +40,7 @@ void KirchhoffSaintVenantLaw<TModel>::CalculateMaterialResponse(Parameters& rVal
         return;
     }
 
-    // Kirchhoff / Cauchy: spatial quantities need F, so E is always recomputed from it (spec §3.4).
+    // Kirchhoff / Cauchy: spatial quantities need F, so E is always recomputed from it (docs/theory/structural.md §4).
     const Matrix F = detail::DeformationGradient(rValues, detail::TensorDimension(TModel), false, name);
     if (measure == StressMeasure::Cauchy) detail::CheckPositiveDeterminant(rValues, name);
     const double scale = measure == StressMeasure::Cauchy ? 1.0 / rValues.determinant_f : 1.0;

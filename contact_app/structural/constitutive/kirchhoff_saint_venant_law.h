@@ -8,7 +8,8 @@
 
 namespace contact_app {
 
-/// Kirchhoff–Saint-Venant hyperelasticity S = D E = λ tr(E) I + 2μ E (spec §3.4), D the linear-elastic
+/// Kirchhoff–Saint-Venant hyperelasticity S = D E = λ tr(E) I + 2μ E (docs/theory/structural.md §4), D the
+/// linear-elastic
 /// matrix of the model (3D, plane strain, plane stress). PK2: E is the element's strain or E(F);
 /// tangent D. Kirchhoff: E(F) always, τ = F S Fᵀ, tangent c = Q D Qᵀ (push-forward); Cauchy: both / det F.
 /// For Kirchhoff/Cauchy the law writes the Almansi strain ½(I − b⁻¹) unless the element provides strain.

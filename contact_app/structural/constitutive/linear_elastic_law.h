@@ -8,7 +8,7 @@
 
 namespace contact_app {
 
-/// Isotropic linear elasticity σ = D ε (spec §3.2), D of the model (3D, plane strain, plane stress,
+/// Isotropic linear elasticity σ = D ε (docs/theory/structural.md §4), D of the model (3D, plane strain, plane stress,
 /// axisymmetric [rr, zz, θθ, rz]). Every StressMeasure returns the same σ = D ε and tangent D, as Kratos.
 /// ε is the element's strain (use_element_provided_strain) or the Green–Lagrange E = ½(FᵀF − I), which is
 /// then written to strain_vector. Registers LinearElastic3DLaw, LinearElasticPlaneStrain2DLaw,

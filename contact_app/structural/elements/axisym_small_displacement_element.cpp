@@ -30,7 +30,8 @@ void AxisymSmallDisplacementElement<TNumNodes>::ComputeKinematics(std::size_t po
     rKinematics.strain.setZero();
     for (int i = 0; i < TNumNodes; ++i)
         rKinematics.strain.noalias() += rKinematics.B.template middleCols<2>(i * 2) * u.row(i).transpose();
-    // [BUG?] §1.5: Kratos writes a 3×3 pattern into a 2×2 equivalent F; the full 3×3 I + ε is passed here.
+    // docs/theory/structural.md §8 D3: Kratos writes a 3×3 pattern into a 2×2 equivalent F; the full 3×3 I + ε is
+    // passed here.
     rKinematics.F = EquivalentDeformationGradient<3>(rKinematics.strain);
     rKinematics.detF = rKinematics.F.determinant();
     rKinematics.weight = 2.0 * M_PI * radius * reference.weight * reference.detJ0;

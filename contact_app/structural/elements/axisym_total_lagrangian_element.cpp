@@ -20,7 +20,8 @@ void AxisymTotalLagrangianElement<TNumNodes>::ComputeKinematics(std::size_t poin
     const auto& reference = this->GetReferencePoint(point);
     const NodalMatrix X0 = this->NodalCoordinates(Geometry::Configuration::Initial);
     const NodalMatrix x = this->NodalCoordinates(Geometry::Configuration::Current);
-    // [BUG?] §1.5: Kratos takes the "initial" radius from the previous step and the weight from the current
+    // docs/theory/structural.md §8 D3: Kratos takes the "initial" radius from the previous step and the weight from the
+    // current
     // radius; the total-Lagrangian form uses the initial radius R for F_θθ = r/R, the hoop row and 2πR dA0.
     const double radius0 = reference.N.dot(X0.col(0));
     const double radius = reference.N.dot(x.col(0));

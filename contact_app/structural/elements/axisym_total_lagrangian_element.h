@@ -5,7 +5,8 @@
 
 namespace contact_app {
 
-/// Axisymmetric total-Lagrangian solid (Kratos AxisymTotalLagrangian, implemented consistently; spec §1.5 lists
+/// Axisymmetric total-Lagrangian solid (Kratos AxisymTotalLagrangian, implemented consistently;
+/// docs/theory/structural.md §8 D3 lists
 /// the Kratos defects). x = r, y = z; F = [∂x/∂X, 0; 0, r/R] with R = Σ N_k X_k the initial and r = Σ N_k x_k the
 /// current radius; E = ½(FᵀF − I) in [rr, zz, θθ, rz]; hoop row of B_L: (r/R)·N_i/R; K_g adds S_θθ N_i N_j / R².
 /// RHS = ∫ (Nᵀ b − B_Lᵀ S) 2πR dA0, LHS = ∫ (B_Lᵀ D B_L + K_g[S]) 2πR dA0 (THICKNESS does not enter).

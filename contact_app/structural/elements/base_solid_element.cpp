@@ -480,7 +480,7 @@ Eigen::Matrix<double, TNumNodes, TNumNodes> BaseSolidElement<TDim, TNumNodes, TS
 template <int TDim, int TNumNodes, int TStrainSize>
 typename BaseSolidElement<TDim, TNumNodes, TStrainSize>::ShapeVector
 BaseSolidElement<TDim, TNumNodes, TStrainSize>::LumpedNodalMass() const {
-    // Row-sum lumping factors of the default rule times the current measure (spec §1.1).
+    // Row-sum lumping factors of the default rule times the current measure (docs/theory/structural.md §2).
     const Geometry& geometry = GetGeometry();
     const NodalMatrix x = NodalCoordinates(Geometry::Configuration::Current);
     ShapeVector row_sum = ShapeVector::Zero();
@@ -492,7 +492,8 @@ BaseSolidElement<TDim, TNumNodes, TStrainSize>::LumpedNodalMass() const {
         geometry.ShapeFunctionsLocalGradients(DN, point.local);
         const ShapeVector n = N;
         double factor = point.weight * (x.transpose() * NodalMatrix(DN)).determinant();
-        // [BUG?] §1.5: Kratos leaves 2πr out of the axisymmetric lumped mass; the correct mass includes it.
+        // docs/theory/structural.md §8 D2: Kratos leaves 2πr out of the axisymmetric lumped mass; the correct mass
+        // includes it.
         if constexpr (kAxisymmetric) factor *= 2.0 * M_PI * n.dot(x.col(0));
         row_sum += factor * n;
         total += factor;

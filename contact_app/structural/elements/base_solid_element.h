@@ -23,7 +23,7 @@ inline constexpr int kSolidStrainSize = TDim == 2 ? 3 : 6;
 ///   RHS = Σ_g w_g (Nᵀ b − Bᵀ s),   LHS = Σ_g w_g (Bᵀ D B + K_g[s]),   b = ρ (g_prop + Σ_k N_k g_k),
 /// plus consistent/lumped mass, Rayleigh damping, DoFs, integration-point results and Check(). The formulations
 /// (SmallDisplacementElement, TotalLagrangianElement, UpdatedLagrangianElement and the axisymmetric ones)
-/// supply ComputeKinematics(). Conventions (shared/spec/kratos_structural.md §0–1): DoFs node by node x, y(, z);
+/// supply ComputeKinematics(). Conventions (docs/theory/structural.md §1–2): DoFs node by node x, y(, z);
 /// RHS = f_ext − f_int; LHS = −∂RHS/∂u; current coordinates = X + u (the solver moves the mesh).
 /// Theory and the differences from Kratos: docs/theory/solid_elements.md.
 /// @tparam TStrainSize 3 (plane), 4 (axisymmetric, TDim = 2) or 6 (3D). Instantiated for the rows of

@@ -8,7 +8,8 @@ namespace contact_app {
 /// Small-displacement solid (Kratos SmallDisplacement): kinematics on the initial configuration only,
 /// ε = B u, RHS = ∫_Ω0 (Nᵀ b − Bᵀ σ) dΩ, LHS = ∫_Ω0 Bᵀ D B dΩ (× THICKNESS in 2D), no geometric stiffness.
 /// The law receives ε (USE_ELEMENT_PROVIDED_STRAIN), the PK2 measure and the "equivalent F" I + ε, which the
-/// Neo-Hookean laws use (spec §1.2, §3.3: then the tangent is the law's ℂ(C_eq), exact only as ε → 0).
+/// Neo-Hookean laws use (docs/theory/solid_elements.md, last paragraph: then the tangent is the law's ℂ(C_eq), exact
+/// only as ε → 0).
 /// Registers SmallDisplacementElement{2D3N,2D4N,2D6N,3D4N,3D8N,3D10N}.
 template <int TDim, int TNumNodes>
 class SmallDisplacementElement : public BaseSolidElement<TDim, TNumNodes, kSolidStrainSize<TDim>> {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// Voigt maps of the solid elements (shared/spec/kratos_structural.md §0): plane [xx, yy, xy], axisymmetric
+/// Voigt maps of the solid elements (docs/theory/structural.md §1): plane [xx, yy, xy], axisymmetric
 /// [rr, zz, θθ, rz], 3D [xx, yy, zz, xy, yz, xz]; strains carry engineering shear γ = 2ε, stresses do not.
 #pragma once
 

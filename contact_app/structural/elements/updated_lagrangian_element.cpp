@@ -40,7 +40,7 @@ void UpdatedLagrangianElement<TDim, TNumNodes>::Initialize(const ProcessInfo& rC
 
 template <int TDim, int TNumNodes>
 void UpdatedLagrangianElement<TDim, TNumNodes>::InitializeSolutionStep(const ProcessInfo& rCurrentProcessInfo) {
-    // [BUG?] §1.4/§9.6: Kratos makes F read as ΔF alone between FinalizeSolutionStep and the next
+    // docs/theory/structural.md §8 D6: Kratos makes F read as ΔF alone between FinalizeSolutionStep and the next
     // InitializeSolutionStep; applying the stored F here keeps F = ΔF F0 the total F in every window.
     if (mHasF0Next) {
         mF0 = mF0Next;
@@ -86,7 +86,8 @@ void UpdatedLagrangianElement<TDim, TNumNodes>::ComputeKinematics(std::size_t po
     rKinematics.detF = det_j / J_n.determinant() * mDetF0[point];
     rKinematics.strain = GreenLagrangeStrain<kSolidStrainSize<TDim>>(rKinematics.F);
     rKinematics.weight = reference.weight * det_j * this->ThicknessFactor();
-    // [BUG?] §9.5: Kratos integrates ρ0 b over the current volume; ρ0 b dV0 = ρ0 b dv / J is the correct load.
+    // docs/theory/structural.md §8 D5: Kratos integrates ρ0 b over the current volume; ρ0 b dV0 = ρ0 b dv / J is the
+    // correct load.
     rKinematics.body_weight = rKinematics.weight / rKinematics.detF;
 }
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// The contact condition table: the ALM / penalty contact names are the spec's 58 (condition_classes.md, registered
+/// The contact condition table: the ALM / penalty contact names are the 58 of docs/registered_conditions.md (registered
 /// names), decoded consistently.
 #include <algorithm>
 

@@ -212,7 +212,7 @@ SlidingPair MakeSlidingPair(FrictionalModel& model, const std::string& name, std
     return result;
 }
 
-/// MatrixSize per family and pair (condition_classes.md, families table).
+/// MatrixSize per family and pair (docs/registered_conditions.md §2).
 const std::map<std::string, std::map<std::string, int>> kSpecSizes = {
     {"ALMFrictional", {{"2D2N", 12}, {"3D3N", 27}, {"3D4N", 36}, {"3D3N4N", 30}, {"3D4N3N", 33}}},
     {"PenaltyFrictional", {{"2D2N", 8}, {"3D3N", 18}, {"3D4N", 24}, {"3D3N4N", 21}, {"3D4N3N", 21}}}};

@@ -159,7 +159,7 @@ int ActiveInactiveValue(const Condition* c) {
 
 class FrictionlessMortarNames : public ::testing::TestWithParam<std::string> {};
 
-/// MatrixSize per family and pair (condition_classes.md, families table).
+/// MatrixSize per family and pair (docs/registered_conditions.md §2).
 const std::map<std::string, std::map<std::string, int>> kSpecSizes = {
     {"ALMFrictionless", {{"2D2N", 10}, {"3D3N", 21}, {"3D4N", 28}, {"3D3N4N", 24}, {"3D4N3N", 25}}},
     {"ALMFrictionlessComponents", {{"2D2N", 12}, {"3D3N", 27}, {"3D4N", 36}, {"3D3N4N", 30}, {"3D4N3N", 33}}},
@@ -276,7 +276,8 @@ TEST_P(FrictionlessMortarNames, TangentIsTheCentralDifferenceOfMinusRhs) {
 }
 
 /// Matching flat faces at a uniform gap g, all nodes active: WEIGHTED_GAP_j = g ∫N_j, NODAL_AREA_j = ∫N_j (penalty
-/// only; the ALM contribution leaves it untouched) and the RHS of §3.1 (ALM) or §3.4 (penalty).
+/// only; the ALM contribution leaves it untouched) and the RHS of docs/theory/contact_residuals.md §3 (ALM) or §6
+/// (penalty).
 class MatchingPairNames : public ::testing::TestWithParam<std::string> {};
 
 /// A tangential multiplier of the flat pairs (normal ±y in 2D, ±z in 3D): zero unless components family.
@@ -446,7 +447,8 @@ TEST_P(MatchingPairNames, PairIsolatedAtAnEarlierPassCountsOnceItOverlaps) {
     for (int j = 0; j < row.num_slave; ++j) EXPECT_EQ(slave[j].GetValue(NODAL_AREA), 0.0) << j;
 }
 
-/// Penalty only (§3.4): no SCALE_FACTOR needed; inactive nodes contribute nothing (all inactive → zero system);
+/// Penalty only (docs/theory/contact_residuals.md §6): no SCALE_FACTOR needed; inactive nodes contribute nothing (all
+/// inactive → zero system);
 /// an active node without INITIAL_PENALTY is an input error.
 class PenaltyFrictionlessNames : public ::testing::TestWithParam<std::string> {};
 
@@ -484,7 +486,8 @@ TEST_P(PenaltyFrictionlessNames, InactiveNodesContributeNothingAndActiveOnesNeed
     EXPECT_GT(lhs.norm(), 0.0);
 }
 
-/// ALM families (§3.1, §3.2): on inactive nodes RHS_λ = −k²/ε λ, LHS_λλ = k²/ε I and nothing else, so the Newton
+/// ALM families (docs/theory/contact_residuals.md §3, §4): on inactive nodes RHS_λ = −k²/ε λ, LHS_λλ = k²/ε I and
+/// nothing else, so the Newton
 /// step returns every multiplier (all components for the components family) to zero.
 class ALMInactiveNames : public ::testing::TestWithParam<std::string> {};
 

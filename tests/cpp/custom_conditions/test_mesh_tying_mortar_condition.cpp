@@ -62,7 +62,7 @@ std::string CaseName(const ::testing::TestParamInfo<TyingCase>& info) {
     return std::string(info.param.kind.suffix) + (info.param.scalar ? "Temperature" : "Displacement");
 }
 
-/// Spec sizes (condition_classes.md, size table).
+/// Sizes of docs/registered_conditions.md §2.
 int SpecSize(const PairKind& kind, bool scalar) {
     const std::map<std::string, std::pair<int, int>> sizes = {
         {"2D2N", {12, 6}}, {"3D3N", {27, 9}}, {"3D4N", {36, 12}}, {"3D3N4N", {30, 10}}, {"3D4N3N", {33, 11}}};

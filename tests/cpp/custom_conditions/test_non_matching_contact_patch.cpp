@@ -4,7 +4,8 @@
 /// forces must be exactly the consistent nodal forces of a uniform pressure p: slave ∫ p N_k n, master −∫ p N_l n
 /// over the overlap (the dual basis reproduces constants and D_kk = ∫ N_k). ALM and ALM components families, 2D
 /// lines and 3D quadrilaterals. The penalty families are not exact here by construction: their force ε g̃ᶜ Dᶜ uses
-/// the weighted gap of each pair (kratos_residuals.md §2), so a node shared by two pairs gets ε g (Dᶜ)² summed
+/// the weighted gap of each pair (docs/theory/contact_residuals.md §2), so a node shared by two pairs gets ε g (Dᶜ)²
+/// summed
 /// over the pairs, not ε g D — the reference's convention, kept.
 #include <map>
 

@@ -1,4 +1,4 @@
-"""The contact processes set up the reference cases' interfaces as kratos_python_layer.md §7 says.
+"""The contact processes set up the reference cases' interfaces as docs/input_layer.md §3–4 says.
 
 Each case is initialised through the analysis (solver variables and DoFs, mdpa, materials,
 processes) and its first step's search is run; then the Contact part (generated interface

@@ -1,6 +1,7 @@
 """The hertz_2d example: a cylinder on an elastic foundation against the 2D Hertz solution.
 
-Analytic values (../shared/spec/benchmarks.md §2.2): b = sqrt(4 P' R / (pi E*)), p0 = 2 P' / (pi b).
+Analytic values (Hertz, cylinders; K. L. Johnson, Contact Mechanics, 1985, §4.3):
+b = sqrt(4 P' R / (pi E*)), p0 = 2 P' / (pi b).
 b is the moment estimate b^2 = 4 sum(x^2 f) / sum(f) of the nodal forces, p0 the semi-ellipse fit.
 The quick test runs the coarsest mesh through the example script (as a user does) and checks its
 outputs; the slow study runs three nested refinements (h halved each time) in-process.

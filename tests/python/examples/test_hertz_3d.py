@@ -1,6 +1,6 @@
 """The hertz_3d example: a sphere on an elastic block against the 3D Hertz solution.
 
-Analytic values (../shared/spec/benchmarks.md §2.1): a = (3 F R / (4 E*))^(1/3),
+Analytic values (Hertz; K. L. Johnson, Contact Mechanics, 1985, §4.2): a = (3 F R / (4 E*))^(1/3),
 p0 = 3 F / (2 pi a^2). The fast tests check the mesh script, the two estimators on synthetic
 profiles and the coarsest mesh run through the example script (as a user does); the slow study
 runs three nested refinements (h halved each time) in-process.

@@ -14,7 +14,7 @@ TEST(AxisymLineLoadCondition2D, VerticalEdgeCarriesTwoPiRLq) {
     model.AddNodes({Array3(2.0, 0.0, 0.0), Array3(2.0, 3.0, 0.0)});
     Condition& edge = model.AddCondition("AxisymLineLoadCondition2D2N", 1, {1, 2});
     edge.SetValue(LINE_LOAD, Array3(0.5, 0.0, 0.0));
-    model.properties->SetValue(THICKNESS, 4.0);  // [BUG?] §2.5: not divided by THICKNESS
+    model.properties->SetValue(THICKNESS, 4.0);  // docs/theory/structural.md §8 D2: not divided by THICKNESS
     const Vector rhs = Rhs(edge);
     EXPECT_NEAR(rhs[0] + rhs[2], 2.0 * M_PI * 2.0 * 3.0 * 0.5, 1e-12);
     EXPECT_NEAR(rhs[1] + rhs[3], 0.0, 1e-14);

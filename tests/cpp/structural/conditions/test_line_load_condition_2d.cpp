@@ -51,7 +51,7 @@ TEST(LineLoadCondition2D, LineLoadTotalIsCurrentLengthTimesLoad) {
     Condition& edge = model.AddCondition("LineLoadCondition2D2N", 1, {1, 2});
     Displace(model.part->GetNode(2), Array3(0.2, 0.9, 0.0));  // current length √(1.44 + 0.81) = 1.5
     edge.SetValue(LINE_LOAD, Array3(2.0, -1.0, 7.0));
-    model.properties->SetValue(THICKNESS, 0.1);  // no thickness on loads (spec §2.1)
+    model.properties->SetValue(THICKNESS, 0.1);  // no thickness on loads (docs/theory/structural.md §3)
     Vector rhs = Rhs(edge);
     EXPECT_NEAR(rhs[0] + rhs[2], 1.5 * 2.0, 1e-14);
     EXPECT_NEAR(rhs[1] + rhs[3], -1.5, 1e-14);

@@ -22,7 +22,7 @@ TEST(PointLoadCondition, ConditionAndNodalLoadsAdd) {
 TEST(PointLoadCondition, TwoDimensionalKeepsInPlaneComponents) {
     LoadConditionModel model(true, false);  // POINT_LOAD not historical: only the condition value counts
     Node& node = model.AddNode(1, Array3(1.0, 2.0, 0.0));
-    node.SetValue(POINT_LOAD, Array3(9.0, 9.0, 9.0));  // non-historical nodal values are not read (spec §2.6)
+    node.SetValue(POINT_LOAD, Array3(9.0, 9.0, 9.0));  // not read: non-historical (docs/theory/structural.md §3)
     Condition& condition = model.AddCondition("PointLoadCondition2D1N", 1, {1});
     condition.SetValue(POINT_LOAD, Array3(1.0, -2.0, 5.0));
     EXPECT_TRUE(Rhs(condition).isApprox(Vector(Eigen::Vector2d(1.0, -2.0))));

@@ -18,7 +18,7 @@ TEST(SurfaceLoadCondition3D, UniformPressureOnDisplacedCubeHasZeroNetForce) {
                                                     {4, 8, 7, 3}, {1, 5, 8, 4}, {2, 3, 7, 6}};
     for (std::size_t f = 0; f < faces.size(); ++f)
         model.AddCondition("SurfaceLoadCondition3D4N", f + 1, faces[f]).SetValue(NEGATIVE_FACE_PRESSURE, 2.0);
-    // Undisplaced: the top face is pushed along its geometry normal +z with p·A = 2 (spec §2.4).
+    // Undisplaced: the top face is pushed along its geometry normal +z with p·A = 2 (docs/theory/structural.md §3).
     const Vector top = Rhs(model.part->GetCondition(2));
     EXPECT_NEAR(top[2] + top[5] + top[8] + top[11], 2.0, 1e-14);
     std::mt19937 rng(4);
@@ -57,7 +57,7 @@ TEST(SurfaceLoadCondition3D, NodalLoadsAreHistoricalOnly) {
     LoadConditionModel model(true, false);
     model.AddNodes({Array3(0, 0, 0), Array3(1, 0, 0), Array3(0, 1, 0)});
     for (const auto& node : model.part->Nodes()) {
-        node->SetValue(SURFACE_LOAD, Array3(1.0, 1.0, 1.0));  // not read (spec §2.6)
+        node->SetValue(SURFACE_LOAD, Array3(1.0, 1.0, 1.0));  // not read (docs/theory/structural.md §3)
         node->SetValue(NEGATIVE_FACE_PRESSURE, 1.0);           // not read
     }
     Condition& face = model.AddCondition("SurfaceLoadCondition3D3N", 1, {1, 2, 3});

@@ -70,7 +70,7 @@ TEST_P(NeoHookean, SmallStrainLimitIsLinearElasticity) {
 }
 
 TEST_P(NeoHookean, ElementStrainIsIgnoredAndKept) {
-    // SmallDisplacement elements pass F_eq = I + ε and their ε: the stress follows F (spec §3.3).
+    // SmallDisplacement elements pass F_eq = I + ε and their ε: the stress follows F (docs/theory/structural.md §4).
     auto law = MakeLaw(GetParam());
     const auto properties = ElasticProperties(kYoung, kPoisson);
     const int dim = TensorDimension(*law);

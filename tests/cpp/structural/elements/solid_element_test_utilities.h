@@ -56,7 +56,8 @@ inline void PrintTo(const ElementLawCase& c, std::ostream* os) {
     *os << c.element.name << " × " << c.law;
 }
 std::string ElementName(const ::testing::TestParamInfo<ElementInfo>& info);
-/// True where the law's tangent is not ∂(stress)/∂(strain) of what the element hands it (spec §3.3, §3.5):
+/// True where the law's tangent is not ∂(stress)/∂(strain) of what the element hands it (docs/theory/solid_elements.md,
+/// last paragraph):
 /// SmallDisplacement × Neo-Hookean (tangent ℂ(C_eq) used with ε) and UpdatedLagrangian × linear elastic
 /// ("Cauchy" D E(F) with the constant D as spatial tangent). Kratos behaviour, reproduced.
 bool HasInexactTangent(const ElementLawCase& c);

@@ -43,7 +43,8 @@ double TangentError(const ElementLawCase& c, const Deformation& deformation) {
 TEST_P(ElementLawTest, TangentMatchesFiniteDifference) {
     const ElementLawCase& c = GetParam();
     if (HasInexactTangent(c)) {
-        // Kratos' tangent for this pair is exact only as the strain vanishes (spec §3.3, §3.5): check O(ε).
+        // Kratos' tangent for this pair is exact only as the strain vanishes (docs/theory/solid_elements.md, last
+        // paragraph): check O(ε).
         const double coarse = TangentError(c, {2e-2, 0.0, 2e-3, 5});
         const double fine = TangentError(c, {2e-3, 0.0, 2e-4, 5});
         RecordProperty("fd_relative_error", std::to_string(coarse) + " -> " + std::to_string(fine));
