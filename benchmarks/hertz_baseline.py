@@ -9,15 +9,17 @@ output, and the peak resident memory; then the share of search + contact assembl
 A second table (issue 18) gives, per run, the linear solver and the fill-reducing ordering it used,
 the share of the linear solve in the total, the CPU seconds of the symbolic analyses (the ordering)
 and of the numeric factorisations with their flop count (independent of the machine's load), the
-largest factors (nnz of L + U and UMFPACK's peak factor memory), the peak resident memory and the
+largest factors (nnz of L + U and the solver's peak factor memory), the peak resident memory and the
 errors of the contact size (a, or b in 2D) and of p0 against Hertz theory.
 
 Usage: ``python benchmarks/hertz_baseline.py [--example E] [--steps N] [--ordering O[,O...]]
-[levels ...]`` with E = hertz_2d (default) or hertz_3d, levels 1 2 3 by default, ``--steps N``:
-the full load in N equal steps instead of the example's own time_step, ``--ordering amd,metis``:
-run every level once per UMFPACK ordering (linear_solver_settings.ordering; default: the example's
-own setting, "auto"). For hertz_3d a fractional level is an intermediate mesh
-(``make_mesh.subdivision_factor``): ``--example hertz_3d 3.8`` has 2.8e5 displacement DoFs.
+[--solver S[,S...]] [levels ...]`` with E = hertz_2d (default) or hertz_3d, levels 1 2 3 by
+default, ``--steps N``: the full load in N equal steps instead of the example's own time_step,
+``--ordering amd,metis``: run every level once per fill-reducing ordering
+(linear_solver_settings.ordering; default: the example's own setting, "auto"), ``--solver
+umfpack,mumps``: and once per linear solver_type (default: the example's own). For hertz_3d a
+fractional level is an intermediate mesh (``make_mesh.subdivision_factor``): ``--example
+hertz_3d 3.8`` has 2.8e5 displacement DoFs.
 """
 
 from __future__ import annotations
@@ -37,7 +39,11 @@ OUT = ROOT / "build" / "benchmarks"
 
 
 def _measure(
-    example: str, level: float, steps: int | None = None, ordering: str | None = None
+    example: str,
+    level: float,
+    steps: int | None = None,
+    ordering: str | None = None,
+    solver: str | None = None,
 ) -> dict:
     """Run one level of ``example`` in this process and return its figures."""
     folder = ROOT / "examples" / example
@@ -68,6 +74,8 @@ def _measure(
         parameters["solver_settings"]["time_stepping"]["time_step"] = span / steps
     if ordering is not None:
         parameters["solver_settings"]["linear_solver_settings"]["ordering"] = ordering
+    if solver is not None:
+        parameters["solver_settings"]["linear_solver_settings"]["solver_type"] = solver
     (workdir / "ProjectParameters.json").write_text(json.dumps(parameters, indent=1))
     make_mesh.write_mesh(workdir / f"{example}.msh", level)
     os.chdir(workdir)
@@ -123,36 +131,47 @@ def main(argv: list[str]) -> int:
     """Run the levels in child processes (or, with ``--worker EXAMPLE LEVEL``, measure one)."""
     if argv and argv[0] == "--worker":
         job = json.loads(argv[1])
-        print(json.dumps(_measure(job["example"], job["level"], job["steps"], job["ordering"])))
+        figures = _measure(
+            job["example"], job["level"], job["steps"], job["ordering"], job["solver"]
+        )
+        print(json.dumps(figures))
         return 0
-    example = "hertz_2d"
-    if argv and argv[0] == "--example":
-        if len(argv) < 2 or argv[1] not in EXAMPLES:
-            print(f"--example expects one of {sorted(EXAMPLES)}", file=sys.stderr)
+    options: dict[str, str] = {}
+    while argv and argv[0] in ("--example", "--steps", "--ordering", "--solver"):
+        if len(argv) < 2:
+            print(f"{argv[0]} expects a value", file=sys.stderr)
             return 2
-        example, argv = argv[1], argv[2:]
-    steps: int | None = None
-    if argv and argv[0] == "--steps":
-        steps, argv = int(argv[1]), argv[2:]
-    orderings: list[str | None] = [None]
-    if argv and argv[0] == "--ordering":
-        orderings, argv = list(argv[1].split(",")), argv[2:]
+        options[argv[0][2:]], argv = argv[1], argv[2:]
+    example = options.get("example", "hertz_2d")
+    if example not in EXAMPLES:
+        print(f"--example expects one of {sorted(EXAMPLES)}", file=sys.stderr)
+        return 2
+    steps = int(options["steps"]) if "steps" in options else None
+    orderings = options["ordering"].split(",") if "ordering" in options else [None]
+    solvers = options["solver"].split(",") if "solver" in options else [None]
     levels = [float(a) if "." in a else int(a) for a in argv] or [1, 2, 3]
     OUT.mkdir(parents=True, exist_ok=True)
     rows = []
     for level in levels:
-        for ordering in orderings:
-            job = {"example": example, "level": level, "steps": steps, "ordering": ordering}
-            done = subprocess.run(
-                [sys.executable, __file__, "--worker", json.dumps(job)],
-                capture_output=True,
-                text=True,
-                check=False,
-            )
-            if done.returncode != 0:
-                print(f"{job} failed:\n{done.stderr[-2000:]}", file=sys.stderr)
-                return 1
-            rows.append(json.loads(done.stdout.strip().splitlines()[-1]))
+        for solver in solvers:
+            for ordering in orderings:
+                job = {
+                    "example": example,
+                    "level": level,
+                    "steps": steps,
+                    "ordering": ordering,
+                    "solver": solver,
+                }
+                done = subprocess.run(
+                    [sys.executable, __file__, "--worker", json.dumps(job)],
+                    capture_output=True,
+                    text=True,
+                    check=False,
+                )
+                if done.returncode != 0:
+                    print(f"{job} failed:\n{done.stderr[-2000:]}", file=sys.stderr)
+                    return 1
+                rows.append(json.loads(done.stdout.strip().splitlines()[-1]))
     header = (
         f"{example}\n{'level':>5} {'DoFs':>7} {'pairs':>5} {'newton/step':>14} {'total s':>8} "
         f"{'search':>7} {'assembly':>8} {'(contact)':>9} {'solve':>7} {'output':>7} "
@@ -169,13 +188,15 @@ def main(argv: list[str]) -> int:
         )
     size = "a" if example == "hertz_3d" else "b"
     print(
-        f"\n{'level':>5} {'DoFs':>7} {'ordering':>8} {'total s':>8} {'solve s':>8} {'share':>6} "
+        f"\n{'level':>5} {'DoFs':>7} {'solver':>7} {'ordering':>8} {'total s':>8} "
+        f"{'solve s':>8} {'share':>6} "
         f"{'analyses':>8} {'sym CPU':>7} {'num CPU':>7} {'Gflop':>7} {'factors nnz':>11} "
         f"{'factor MB':>9} {'peak MB':>8} {size + ' error':>9} {'p0 error':>9}"
     )
     for r in rows:
         print(
-            f"{r['level']:>5} {r['dofs_displacement']:>7} {r['ordering']:>8} {r['total_s']:8.2f} "
+            f"{r['level']:>5} {r['dofs_displacement']:>7} {r['linear_solver']:>7} "
+            f"{r['ordering']:>8} {r['total_s']:8.2f} "
             f"{r['linear_solve_s']:8.2f} {100 * r['linear_solve_s'] / r['total_s']:5.1f}% "
             f"{r['symbolic_analyses']:>8} {r['symbolic_cpu_s']:7.2f} {r['numeric_cpu_s']:7.2f} "
             f"{r['factor_gflop']:7.1f} {r['max_factor_nonzeros']:11.4g} "

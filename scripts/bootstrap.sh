@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-apt_packages=(build-essential libeigen3-dev libsuitesparse-dev libopenblas0-pthread libgtest-dev ccache ninja-build)
+apt_packages=(build-essential libeigen3-dev libsuitesparse-dev libmumps-seq-dev libopenblas0-pthread libgtest-dev ccache ninja-build)
 missing=()
 for package in "${apt_packages[@]}"; do
   dpkg -s "$package" >/dev/null 2>&1 || missing+=("$package")

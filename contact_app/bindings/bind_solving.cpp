@@ -20,7 +20,9 @@ namespace {
 
 void BindLinearSolvers(py::module_& m) {
     py::class_<LinearSolver, LinearSolver::Pointer>(m, "LinearSolver", "Solver of the global linear system.")
-        .def("Info", &LinearSolver::Info, "The solver's own name (umfpack, cholmod, klu, sparse_lu, cg, bicgstab).")
+        .def("Info", &LinearSolver::Info,
+             "The solver's own name (umfpack, mumps, cholmod, klu, sparse_lu, cg, bicgstab; under a Kratos LU "
+             "name, the one that ran last).")
         .def("Clear", &LinearSolver::Clear, "Forgets the cached factorisation.")
         .def("NumberOfSymbolicAnalyses", &LinearSolver::NumberOfSymbolicAnalyses,
              "How often the sparsity pattern was analysed (pattern reuse diagnostic).")
@@ -54,8 +56,8 @@ void BindLinearSolvers(py::module_& m) {
         },
         py::arg("solver_type") = "", py::arg("tolerance") = 1.0e-6, py::arg("max_iteration") = 1000,
         py::arg("ordering") = "auto",
-        "Linear solver for a Kratos or contact_app solver_type name ('' = umfpack); ordering (UMFPACK): "
-        "'auto', 'amd' or 'metis'.");
+        "Linear solver for a Kratos or contact_app solver_type name ('' = skyline_lu_factorization: UMFPACK "
+        "or MUMPS by size); ordering (UMFPACK, MUMPS): 'auto', 'amd' or 'metis'.");
     m.def("registered_linear_solvers", &RegisteredLinearSolverNames, "Every accepted linear solver_type, sorted.");
     m.def("ResolveLinearSolverName", &ResolveLinearSolverName, py::arg("solver_type"),
           "The solver a solver_type name maps to.");

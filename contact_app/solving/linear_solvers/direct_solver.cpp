@@ -20,15 +20,6 @@ namespace {
 
 constexpr const char* kOrderingKey = "linear_solver_settings.ordering";
 
-const char* OrderingName(FillReducingOrdering ordering) {
-    switch (ordering) {
-        case FillReducingOrdering::Auto: return "auto";
-        case FillReducingOrdering::Amd: return "amd";
-        case FillReducingOrdering::Metis: return "metis";
-    }
-    return "auto";
-}
-
 /// The ordering UMFPACK reports it used (Info[UMFPACK_ORDERING_USED]).
 std::string UsedOrderingName(double code) {
     switch (static_cast<int>(code)) {
@@ -55,10 +46,19 @@ std::string UmfpackStatusText(long status) {
 
 FillReducingOrdering ParseFillReducingOrdering(const std::string& name) {
     for (const auto ordering : {FillReducingOrdering::Auto, FillReducingOrdering::Amd, FillReducingOrdering::Metis})
-        if (name == OrderingName(ordering)) return ordering;
+        if (name == FillReducingOrderingName(ordering)) return ordering;
     const auto names = FillReducingOrderingNames();
     CONTACT_THROW(InputError, "unknown ", kOrderingKey, " \"", name, "\"", "\n  expected: one of ", QuotedList(names),
                   " (\"auto\": metis from ", kAutoMetisMinimumSize, " equations on, amd below)", DidYouMean(name, names));
+}
+
+const char* FillReducingOrderingName(FillReducingOrdering ordering) {
+    switch (ordering) {
+        case FillReducingOrdering::Auto: return "auto";
+        case FillReducingOrdering::Amd: return "amd";
+        case FillReducingOrdering::Metis: return "metis";
+    }
+    return "auto";
 }
 
 std::vector<std::string> FillReducingOrderingNames() { return {"amd", "auto", "metis"}; }
@@ -116,7 +116,7 @@ struct DirectSolver::Backend {
 DirectSolver::DirectSolver(DirectSolverKind kind, FillReducingOrdering ordering)
     : mKind(kind), mOrdering(ordering), mBackend(std::make_unique<Backend>(kind)) {
     mStatistics.solver = Info();
-    if (kind == DirectSolverKind::UmfPack) mStatistics.ordering_setting = OrderingName(ordering);
+    if (kind == DirectSolverKind::UmfPack) mStatistics.ordering_setting = FillReducingOrderingName(ordering);
 }
 
 DirectSolver::~DirectSolver() = default;
@@ -133,18 +133,9 @@ std::string DirectSolver::Info() const {
 
 LinearSolverStatistics DirectSolver::Statistics() const { return mStatistics; }
 
-bool DirectSolver::PatternChanged(const SparseMatrixType& rA) const {
-    const auto cols = static_cast<std::size_t>(rA.cols());
-    const auto nnz = static_cast<std::size_t>(rA.nonZeros());
-    if (mOuter.size() != cols + 1 || mInner.size() != nnz) return true;
-    return !std::equal(mOuter.begin(), mOuter.end(), rA.outerIndexPtr()) ||
-           !std::equal(mInner.begin(), mInner.end(), rA.innerIndexPtr());
-}
-
 void DirectSolver::Clear() {
     mBackend = std::make_unique<Backend>(mKind);
-    mOuter.clear();
-    mInner.clear();
+    mPattern.Clear();
 }
 
 void DirectSolver::SolveWithUmfpack(SparseMatrixType& rA, SystemVectorType& rX, SystemVectorType& rB, bool analyse) {
@@ -207,10 +198,9 @@ void DirectSolver::Solve(SparseMatrixType& rA, SystemVectorType& rX, SystemVecto
         return;
     }
     rA.makeCompressed();
-    const bool analyse = PatternChanged(rA);
+    const bool analyse = !mPattern.Matches(rA);
     if (analyse) {
-        mOuter.assign(rA.outerIndexPtr(), rA.outerIndexPtr() + rA.cols() + 1);
-        mInner.assign(rA.innerIndexPtr(), rA.innerIndexPtr() + rA.nonZeros());
+        mPattern.Assign(rA);
         ++mAnalyses;
     }
     ++mStatistics.factorizations;

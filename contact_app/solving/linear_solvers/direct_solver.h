@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "contact_app/solving/linear_solvers/linear_solver.h"
+#include "contact_app/solving/linear_solvers/sparsity_pattern.h"
 
 namespace contact_app {
 
@@ -25,6 +26,8 @@ inline constexpr std::size_t kAutoMetisMinimumSize = 5000;
 
 /// "auto", "amd" or "metis" → the ordering. @throws InputError naming linear_solver_settings.ordering.
 FillReducingOrdering ParseFillReducingOrdering(const std::string& name);
+/// The setting's name ("auto", "amd", "metis").
+const char* FillReducingOrderingName(FillReducingOrdering ordering);
 /// The accepted ordering names, sorted.
 std::vector<std::string> FillReducingOrderingNames();
 
@@ -44,14 +47,12 @@ public:
 private:
     struct Backend;
     struct Umfpack;
-    bool PatternChanged(const SparseMatrixType& rA) const;
     void SolveWithUmfpack(SparseMatrixType& rA, SystemVectorType& rX, SystemVectorType& rB, bool analyse);
 
     DirectSolverKind mKind;
     FillReducingOrdering mOrdering;
     std::unique_ptr<Backend> mBackend;
-    std::vector<int> mOuter;  // pattern of the last analysed matrix
-    std::vector<int> mInner;
+    SparsityPattern mPattern;  // of the last analysed matrix
     std::size_t mAnalyses = 0;
     LinearSolverStatistics mStatistics;
 };

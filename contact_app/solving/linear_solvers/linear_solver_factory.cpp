@@ -6,8 +6,10 @@
 
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/string_utilities.h"
+#include "contact_app/solving/linear_solvers/auto_direct_solver.h"
 #include "contact_app/solving/linear_solvers/direct_solver.h"
 #include "contact_app/solving/linear_solvers/iterative_solver.h"
+#include "contact_app/solving/linear_solvers/mumps_solver.h"
 
 namespace contact_app {
 
@@ -23,18 +25,20 @@ constexpr SolverNameRow kSolverNames[] = {
     {"umfpack", "umfpack"},
     {"cholmod", "cholmod"},
     {"klu", "klu"},
+    {"mumps", "mumps"},
+    {"MUMPSSolver", "mumps"},
     {"sparse_lu", "sparse_lu"},
     {"eigen_sparse_lu", "sparse_lu"},
-    {"skyline_lu_factorization", "umfpack"},
-    {"SkylineLUFactorizationSolver", "umfpack"},
-    {"skyline_lu", "umfpack"},
-    {"super_lu", "umfpack"},
-    {"SuperLUSolver", "umfpack"},
-    {"Super_LU", "umfpack"},
-    {"superlu", "umfpack"},
-    {"pardiso_lu", "umfpack"},
-    {"pastix", "umfpack"},
-    {"sparse_qr", "umfpack"},
+    {"skyline_lu_factorization", "direct"},
+    {"SkylineLUFactorizationSolver", "direct"},
+    {"skyline_lu", "direct"},
+    {"super_lu", "direct"},
+    {"SuperLUSolver", "direct"},
+    {"Super_LU", "direct"},
+    {"superlu", "direct"},
+    {"pardiso_lu", "direct"},
+    {"pastix", "direct"},
+    {"sparse_qr", "direct"},
     {"pardiso_llt", "cholmod"},
     {"sparse_llt", "cholmod"},
     {"cholmod_llt", "cholmod"},
@@ -62,7 +66,8 @@ std::vector<std::string> RegisteredLinearSolverNames() {
 }
 
 std::string ResolveLinearSolverName(const std::string& solver_type) {
-    const std::string name = solver_type.empty() ? std::string("umfpack") : StripModulePrefix(solver_type);
+    // No solver_type: as in Kratos, the fastest direct solver.
+    const std::string name = solver_type.empty() ? std::string("skyline_lu_factorization") : StripModulePrefix(solver_type);
     for (const auto& row : kSolverNames)
         if (name == row.name) return row.resolved;
     const auto names = RegisteredLinearSolverNames();
@@ -73,12 +78,14 @@ std::string ResolveLinearSolverName(const std::string& solver_type) {
 LinearSolver::Pointer CreateLinearSolver(const LinearSolverSettings& settings) {
     const std::string resolved = ResolveLinearSolverName(settings.solver_type);
     const FillReducingOrdering ordering = ParseFillReducingOrdering(settings.ordering);
-    CONTACT_CHECK(resolved == "umfpack" || ordering == FillReducingOrdering::Auto, InputError,
-                  "linear_solver_settings.ordering \"", settings.ordering, "\" applies to UMFPACK only, and solver_type \"",
-                  settings.solver_type, "\" runs ", resolved,
-                  "\n  fix: remove \"ordering\", or use a solver_type that maps to umfpack (\"umfpack\", "
-                  "\"skyline_lu_factorization\", \"super_lu\", \"pardiso_lu\", ...)");
+    CONTACT_CHECK(resolved == "umfpack" || resolved == "mumps" || resolved == "direct" || ordering == FillReducingOrdering::Auto, InputError,
+                  "linear_solver_settings.ordering \"", settings.ordering,
+                  "\" applies to UMFPACK and MUMPS only, and solver_type \"", settings.solver_type, "\" runs ", resolved,
+                  "\n  fix: remove \"ordering\", or use a solver_type that maps to umfpack or mumps (\"umfpack\", "
+                  "\"mumps\", \"skyline_lu_factorization\", \"super_lu\", \"pardiso_lu\", ...)");
+    if (resolved == "direct") return std::make_shared<AutoDirectSolver>(ordering);
     if (resolved == "umfpack") return std::make_shared<DirectSolver>(DirectSolverKind::UmfPack, ordering);
+    if (resolved == "mumps") return std::make_shared<MumpsSolver>(ordering);
     if (resolved == "cholmod") return std::make_shared<DirectSolver>(DirectSolverKind::Cholmod);
     if (resolved == "klu") return std::make_shared<DirectSolver>(DirectSolverKind::Klu);
     if (resolved == "sparse_lu") return std::make_shared<DirectSolver>(DirectSolverKind::SparseLU);

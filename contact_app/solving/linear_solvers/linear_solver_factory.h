@@ -11,26 +11,30 @@ namespace contact_app {
 /// Typed linear-solver settings (the Python layer validates the JSON and fills this).
 struct LinearSolverSettings {
     /// A Kratos solver_type name ("skyline_lu_factorization", "super_lu", "sparse_lu", "amgcl", "cg", ...)
-    /// or one of ours ("umfpack", "cholmod", "klu", "sparse_lu", "cg", "bicgstab"). Empty = the default (umfpack).
+    /// or one of ours ("umfpack", "mumps", "cholmod", "klu", "sparse_lu", "cg", "bicgstab"). Empty = the
+    /// default, as "skyline_lu_factorization" (UMFPACK or MUMPS by size).
     std::string solver_type;
     double tolerance = 1.0e-6;  ///< iterative solvers only
     int max_iteration = 1000;   ///< iterative solvers only
-    /// Fill-reducing ordering of UMFPACK: "auto" (METIS for large systems, AMD for small ones), "amd"
-    /// or "metis". Another solver accepts only "auto".
+    /// Fill-reducing ordering of UMFPACK and MUMPS: "auto" (the measured best: for UMFPACK METIS for
+    /// large systems, AMD for small ones), "amd" or "metis". Another solver accepts only "auto".
     std::string ordering = "auto";
 };
 
-/// Creates the solver a name maps to. Every Kratos direct name maps to UMFPACK (all of them are
-/// LU factorisations that agree to round-off); "cholmod" to CHOLMOD, "klu" to KLU, "sparse_lu"
-/// to Eigen's SparseLU; the iterative names to CG or BiCGSTAB(ILUT).
+/// Creates the solver a name maps to. Every Kratos LU name maps to AutoDirectSolver (UMFPACK for
+/// small systems, MUMPS for large ones: all of them are LU factorisations that agree to round-off);
+/// "umfpack" and "mumps" to those alone, "cholmod" to CHOLMOD, "klu" to KLU, "sparse_lu" to Eigen's
+/// SparseLU; the iterative names to CG or BiCGSTAB(ILUT).
 /// @throws InputError for an unknown name, listing the accepted names with a suggestion, and for an
-/// unknown ordering or an ordering given to a solver other than UMFPACK (naming linear_solver_settings.ordering).
+/// unknown ordering or an ordering given to a solver other than UMFPACK or MUMPS (naming
+/// linear_solver_settings.ordering).
 LinearSolver::Pointer CreateLinearSolver(const LinearSolverSettings& settings);
 
 /// Every accepted solver_type, sorted.
 std::vector<std::string> RegisteredLinearSolverNames();
 
-/// The solver a name resolves to ("umfpack", "cholmod", "klu", "sparse_lu", "cg", "bicgstab").
+/// The solver a name resolves to ("direct" = UMFPACK or MUMPS by size, "umfpack", "mumps", "cholmod",
+/// "klu", "sparse_lu", "cg", "bicgstab").
 /// @throws InputError for an unknown name.
 std::string ResolveLinearSolverName(const std::string& solver_type);
 

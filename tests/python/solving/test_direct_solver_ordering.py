@@ -1,7 +1,7 @@
-"""UMFPACK's fill-reducing ordering (issue 18).
+"""The direct solvers' fill-reducing ordering and MUMPS (issue 18).
 
-The setting and its validation, identical results AMD vs METIS on a contact case, and the
-linear-solver line of the run summary.
+The setting and its validation, identical results AMD vs METIS and UMFPACK vs MUMPS on a contact
+case, and the linear-solver line of the run summary.
 """
 
 from __future__ import annotations
@@ -55,14 +55,16 @@ def test_unknown_ordering_names_the_key_and_suggests() -> None:
 
 
 def test_ordering_of_a_solver_other_than_umfpack_is_an_error() -> None:
-    with pytest.raises(ca.InputError, match="applies to UMFPACK only"):
+    with pytest.raises(ca.InputError, match="applies to UMFPACK and MUMPS only"):
         _static_solver({"solver_type": "cholmod", "ordering": "amd"})
     _static_solver({"solver_type": "cholmod", "ordering": "auto"})  # the default is fine
     with pytest.raises(ca.InputError, match='"ordering" has the wrong type'):
         _static_solver({"solver_type": "umfpack", "ordering": 3})
 
 
-def _run_hertz_2d(directory: Path, ordering: str, echo_level: int = 0) -> tuple[Any, str]:
+def _run_hertz_2d(
+    directory: Path, ordering: str, echo_level: int = 0, solver_type: str | None = None
+) -> tuple[Any, str]:
     """The hertz_2d example at its coarsest level, without output, with the given ordering."""
     spec = importlib.util.spec_from_file_location("hertz_2d_make_mesh", HERTZ_2D / "make_mesh.py")
     make_mesh = importlib.util.module_from_spec(spec)
@@ -78,6 +80,8 @@ def _run_hertz_2d(directory: Path, ordering: str, echo_level: int = 0) -> tuple[
         HERTZ_2D / "materials.json"
     )
     parameters["solver_settings"]["linear_solver_settings"]["ordering"] = ordering
+    if solver_type is not None:
+        parameters["solver_settings"]["linear_solver_settings"]["solver_type"] = solver_type
     parameters.pop("output_processes", None)
     stream = io.StringIO()
     analysis = ca.analysis.StructuralMechanicsAnalysis(
@@ -96,6 +100,17 @@ def _state(analysis: Any) -> tuple[np.ndarray, np.ndarray]:
     return displacement, pressure
 
 
+def _assert_same_contact_solution(first: Any, second: Any, tolerance: float) -> None:
+    """Same Newton iterations; displacements and contact pressures equal to ``tolerance``."""
+    iterations = [[s.iterations for s in a.reporter.steps] for a in (first, second)]
+    assert iterations[0] == iterations[1]
+    first_u, first_p = _state(first)
+    second_u, second_p = _state(second)
+    assert np.abs(first_p).max() > 0.0  # the contact is active
+    assert np.abs(second_u - first_u).max() <= tolerance * np.abs(first_u).max()
+    assert np.abs(second_p - first_p).max() <= tolerance * np.abs(first_p).max()
+
+
 def test_amd_and_metis_give_the_same_contact_solution(tmp_path: Path) -> None:
     amd, amd_text = _run_hertz_2d(tmp_path, "amd")
     metis, metis_text = _run_hertz_2d(tmp_path, "metis", echo_level=1)
@@ -107,14 +122,8 @@ def test_amd_and_metis_give_the_same_contact_solution(tmp_path: Path) -> None:
         assert figures["ordering"] == name  # Debian's UMFPACK has METIS built in
         assert figures["ordering_setting"] == name
         assert figures["max_factor_nonzeros"] > 0 and figures["max_factor_memory"] > 0
-    iterations = [[s.iterations for s in a.reporter.steps] for a in (amd, metis)]
-    assert iterations[0] == iterations[1]
-    amd_u, amd_p = _state(amd)
-    metis_u, metis_p = _state(metis)
-    assert np.abs(amd_p).max() > 0.0  # the contact is active
     # Two pivot sequences of the same Newton iterates: equal to round-off of the solves.
-    assert np.abs(metis_u - amd_u).max() <= 1e-9 * np.abs(amd_u).max()
-    assert np.abs(metis_p - amd_p).max() <= 1e-9 * np.abs(amd_p).max()
+    _assert_same_contact_solution(amd, metis, 1e-9)
 
     # The summary names the solver, the ordering, the fill and the factor memory.
     summary_line = next(line for line in amd_text.splitlines() if "linear solver:" in line)
@@ -126,3 +135,15 @@ def test_amd_and_metis_give_the_same_contact_solution(tmp_path: Path) -> None:
     per_step = [line for line in metis_text.splitlines() if "last factors" in line]
     assert len(per_step) == len(metis.reporter.steps)
     assert all('ordering metis ("metis")' in line for line in per_step)
+
+
+def test_mumps_gives_the_umfpack_contact_solution(tmp_path: Path) -> None:
+    umfpack, _ = _run_hertz_2d(tmp_path, "auto", solver_type="umfpack")
+    mumps, mumps_text = _run_hertz_2d(tmp_path, "auto", solver_type="mumps")
+    figures = mumps.reporter.linear_solver
+    assert figures["solver"] == "mumps"
+    assert figures["ordering"] == "metis" and figures["ordering_setting"] == "auto"
+    assert figures["max_factor_nonzeros"] > 0 and figures["max_factor_memory"] > 0
+    _assert_same_contact_solution(umfpack, mumps, 1e-10)
+    summary_line = next(line for line in mumps_text.splitlines() if "linear solver:" in line)
+    assert summary_line.startswith('  linear solver: mumps, ordering metis ("auto"), ')

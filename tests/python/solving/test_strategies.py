@@ -103,7 +103,7 @@ def test_strategy_reports_a_step_that_does_not_converge() -> None:
 
 
 def test_linear_solver_names_map_and_unknown_names_suggest() -> None:
-    assert ca.ResolveLinearSolverName("SkylineLUFactorizationSolver") == "umfpack"
+    assert ca.ResolveLinearSolverName("SkylineLUFactorizationSolver") == "direct"
     assert ca.CreateLinearSolver("cholmod").Info() == "cholmod"
     assert "skyline_lu_factorization" in ca.registered_linear_solvers()
     with pytest.raises(ca.InputError, match='did you mean "bicgstab"'):

@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+
+#include "contact_app/solving/linear_solvers/direct_solver.h"
+#include "contact_app/solving/linear_solvers/linear_solver.h"
+#include "contact_app/solving/linear_solvers/sparsity_pattern.h"
+
+namespace contact_app {
+
+/// MUMPS (multifrontal LU; Debian's sequential double-precision build, libmumps-seq) on the
+/// unsymmetric system (SYM = 0), centralized and assembled in coordinate format. The analysis
+/// (ordering, symbolic factorisation) is redone only when the sparsity pattern changes; every Solve
+/// refactorises numerically. Ordering: "metis" (the default under "auto") is METIS nested
+/// dissection of the pattern of A + Aᵀ, computed through CHOLMOD and given to MUMPS
+/// (ICNTL(7) = 1), because Debian's MUMPS is built without METIS; "amd" is MUMPS's AMD
+/// (ICNTL(7) = 0). Why and when: docs/architecture.md, "Solving layer".
+class MumpsSolver : public LinearSolver {
+public:
+    explicit MumpsSolver(FillReducingOrdering ordering = FillReducingOrdering::Auto);
+    ~MumpsSolver() override;
+    MumpsSolver(const MumpsSolver&) = delete;
+    MumpsSolver& operator=(const MumpsSolver&) = delete;
+
+    /// @throws ConvergenceError naming the MUMPS error code (INFOG(1)) and what it means: a singular
+    /// matrix (-10), too little working space after two enlargements (-8, -9), no memory (-13).
+    void Solve(SparseMatrixType& rA, SystemVectorType& rX, SystemVectorType& rB) override;
+    void Clear() override;
+    std::string Info() const override { return "mumps"; }
+    std::size_t NumberOfSymbolicAnalyses() const override { return mAnalyses; }
+    LinearSolverStatistics Statistics() const override { return mStatistics; }
+
+private:
+    struct Instance;
+    void Analyse(SparseMatrixType& rA);
+    void Factorise(SparseMatrixType& rA);
+
+    FillReducingOrdering mOrdering;
+    std::unique_ptr<Instance> mInstance;  // owned; created by the first Solve, freed by Clear
+    SparsityPattern mPattern;             // of the last analysed matrix
+    std::size_t mAnalyses = 0;
+    LinearSolverStatistics mStatistics;
+};
+
+}  // namespace contact_app

@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// MumpsSolver: unsymmetric and saddle-point solves, analysis reuse, orderings, statistics, errors.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "contact_app/kernel/exceptions.h"
+#include "contact_app/solving/linear_solvers/linear_solver_factory.h"
+#include "contact_app/solving/linear_solvers/mumps_solver.h"
+#include "tests/cpp/solving/linear_solver_test_utilities.h"
+
+namespace contact_app {
+namespace {
+
+using testing::Laplacian;
+using testing::SaddlePoint;
+
+/// 2D convection–diffusion on an m×m grid (unsymmetric, non-singular; the upwind terms break symmetry).
+SparseMatrixType ConvectionDiffusion(int m) {
+    std::vector<Eigen::Triplet<double, int>> entries;
+    const auto index = [m](int i, int j) { return i + m * j; };
+    for (int j = 0; j < m; ++j)
+        for (int i = 0; i < m; ++i) {
+            entries.emplace_back(index(i, j), index(i, j), 4.5);
+            if (i > 0) entries.emplace_back(index(i, j), index(i - 1, j), -1.5);
+            if (i + 1 < m) entries.emplace_back(index(i, j), index(i + 1, j), -0.5);
+            if (j > 0) entries.emplace_back(index(i, j), index(i, j - 1), -1.2);
+            if (j + 1 < m) entries.emplace_back(index(i, j), index(i, j + 1), -0.8);
+        }
+    SparseMatrixType matrix(m * m, m * m);
+    matrix.setFromTriplets(entries.begin(), entries.end());
+    return matrix;
+}
+
+double RelativeError(MumpsSolver& solver, SparseMatrixType matrix) {
+    const SystemVectorType expected = SystemVectorType::LinSpaced(matrix.rows(), 1.0, 2.0);
+    SystemVectorType b = matrix * expected, x;
+    solver.Solve(matrix, x, b);
+    return (x - expected).norm() / expected.norm();
+}
+
+TEST(MumpsSolver, SolvesAnUnsymmetricAndASaddlePointSystem) {
+    for (const auto ordering : {FillReducingOrdering::Auto, FillReducingOrdering::Amd, FillReducingOrdering::Metis}) {
+        MumpsSolver unsymmetric(ordering);
+        EXPECT_LT(RelativeError(unsymmetric, ConvectionDiffusion(30)), 1e-12);
+        MumpsSolver saddle(ordering);
+        EXPECT_LT(RelativeError(saddle, SaddlePoint(200)), 1e-12);
+    }
+}
+
+TEST(MumpsSolver, AnalysesOnlyWhenThePatternChanges) {
+    MumpsSolver solver;
+    SparseMatrixType matrix = ConvectionDiffusion(12);
+    EXPECT_LT(RelativeError(solver, matrix), 1e-12);
+    matrix *= 3.0;
+    matrix.coeffRef(5, 5) += 1.0;  // new values, same pattern: refactorisation only
+    EXPECT_LT(RelativeError(solver, matrix), 1e-12);
+    EXPECT_EQ(solver.NumberOfSymbolicAnalyses(), 1u);
+    EXPECT_EQ(solver.Statistics().factorizations, 2u);
+    EXPECT_LT(RelativeError(solver, SaddlePoint(143)), 1e-12);  // new pattern: analysed again
+    EXPECT_EQ(solver.NumberOfSymbolicAnalyses(), 2u);
+    EXPECT_EQ(solver.Statistics().system_size, 144u);
+    solver.Clear();
+    EXPECT_LT(RelativeError(solver, SaddlePoint(143)), 1e-12);
+    EXPECT_EQ(solver.NumberOfSymbolicAnalyses(), 3u);
+}
+
+TEST(MumpsSolver, StatisticsNameTheSolverTheOrderingAndTheFactors) {
+    for (const auto ordering : {FillReducingOrdering::Auto, FillReducingOrdering::Amd, FillReducingOrdering::Metis}) {
+        MumpsSolver solver(ordering);
+        const SparseMatrixType matrix = ConvectionDiffusion(40);
+        RelativeError(solver, matrix);
+        const LinearSolverStatistics statistics = solver.Statistics();
+        testing::ExpectFactorStatistics(statistics, "mumps", ordering == FillReducingOrdering::Amd ? "amd" : "metis", 1,
+                                        matrix);
+        EXPECT_EQ(statistics.ordering_setting, FillReducingOrderingName(ordering));
+    }
+}
+
+TEST(MumpsSolver, SingularMatrixIsAConvergenceErrorNamingTheCode) {
+    SparseMatrixType matrix = Laplacian(6);
+    matrix.coeffRef(0, 0) = 1.0;  // rows sum to zero: the constant vector is a null vector
+    matrix.coeffRef(5, 5) = 1.0;
+    SystemVectorType b = SystemVectorType::Ones(6), x;
+    MumpsSolver solver;
+    try {
+        solver.Solve(matrix, x, b);
+        FAIL();
+    } catch (const ConvergenceError& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("mumps: the factorisation of the 6x6 system failed"), std::string::npos) << message;
+        EXPECT_NE(message.find("singular matrix (MUMPS error -10; null pivots: 1)"), std::string::npos) << message;
+        EXPECT_NE(message.find("fix:"), std::string::npos) << message;
+    }
+    EXPECT_LT(RelativeError(solver, Laplacian(6)), 1e-12);  // usable after the failure
+}
+
+TEST(MumpsSolver, FactoryNamesAndOrderings) {
+    EXPECT_EQ(ResolveLinearSolverName("mumps"), "mumps");
+    EXPECT_EQ(ResolveLinearSolverName("LinearSolversApplication.mumps"), "mumps");
+    LinearSolverSettings settings;
+    settings.solver_type = "mumps";
+    settings.ordering = "amd";
+    const auto solver = CreateLinearSolver(settings);
+    EXPECT_EQ(solver->Info(), "mumps");
+    EXPECT_EQ(solver->Statistics().ordering_setting, "amd");
+    settings.solver_type = "klu";
+    EXPECT_THROW(CreateLinearSolver(settings), InputError);
+}
+
+}  // namespace
+}  // namespace contact_app
