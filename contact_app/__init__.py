@@ -87,6 +87,7 @@ from ._core import (
     ResolveLinearSolverName,
     Scheme,
     SolvingStrategy,
+    StaticCondensationSolver,
     StringVariable,
     Table,
     VariableData,

@@ -118,6 +118,30 @@ def linear_solver_text(statistics: dict, *, largest: bool = True) -> str:
     return text
 
 
+def condensation_text(statistics: dict) -> str:
+    """One line on the static condensation (``LinearSolver.GetStatistics()``), "" without one.
+
+    Says whether the last solve was condensed and why not, the interface and system sizes, the
+    bulk factorisations with their wall time and the condensed solves with theirs.
+    """
+    status = str(statistics.get("condensation", ""))
+    if not status:
+        return ""
+    text = f"static condensation: {status}"
+    solves = int(statistics.get("condensed_solves", 0))
+    if not solves:
+        return text
+    interface = int(statistics.get("interface_size", 0))
+    size = interface + int(statistics.get("bulk_size", 0))
+    bulk = int(statistics.get("bulk_factorizations", 0))
+    seconds = float(statistics.get("interface_seconds", 0.0))
+    return (
+        f"{text}; interface {interface} of {size} equations, bulk condensed {bulk}x in "
+        f"{float(statistics.get('bulk_seconds', 0.0)):.3g} s, {solves} condensed "
+        f"solve{'s' if solves != 1 else ''} in {seconds:.3g} s ({seconds / solves:.3g} s each)"
+    )
+
+
 class Reporter:
     """Collect timings and step records; print them to ``stream`` (None = silent).
 
@@ -326,6 +350,9 @@ class Reporter:
         ]
         if self.linear_solver is not None:
             lines.append("  " + linear_solver_text(self.linear_solver))
+            condensation = condensation_text(self.linear_solver)
+            if condensation:
+                lines.append("  " + condensation)
         if self.cut_steps:
             lines.append(
                 f"  step cutting: {self.cut_steps} step(s) redone in {self.sub_steps} sub-steps"

@@ -11,6 +11,7 @@
 #include "contact_app/solving/convergence_criteria/mixed_generic_criteria.h"
 #include "contact_app/solving/convergence_criteria/residual_criteria.h"
 #include "contact_app/solving/linear_solvers/linear_solver_factory.h"
+#include "contact_app/solving/linear_solvers/static_condensation_solver.h"
 #include "contact_app/solving/schemes/bossak_scheme.h"
 #include "contact_app/solving/strategies/line_search_strategy.h"
 
@@ -44,11 +45,32 @@ void BindLinearSolvers(py::module_& m) {
                 statistics["symbolic_seconds"] = s.symbolic_seconds;
                 statistics["numeric_seconds"] = s.numeric_seconds;
                 statistics["symbolic_analyses"] = self.NumberOfSymbolicAnalyses();
+                statistics["condensation"] = s.condensation;
+                statistics["interface_size"] = s.interface_size;
+                statistics["bulk_size"] = s.bulk_size;
+                statistics["bulk_factorizations"] = s.bulk_factorizations;
+                statistics["condensed_solves"] = s.condensed_solves;
+                statistics["bulk_seconds"] = s.bulk_seconds;
+                statistics["interface_seconds"] = s.interface_seconds;
                 return statistics;
             },
             "solver, ordering (used) and ordering_setting (asked for), factorizations, system_size, "
             "factor_nonzeros (nnz L + U) and factor_memory (bytes) of the last factorisation, and their maxima; factor_flops, symbolic_seconds and "
-            "numeric_seconds (CPU) summed over the run, symbolic_analyses.");
+            "numeric_seconds (CPU) summed over the run, symbolic_analyses; static condensation: condensation ('' = "
+            "not a condensing solver, 'yes' or 'no (why)'), interface_size and bulk_size of the last condensed solve, "
+            "bulk_factorizations, condensed_solves, bulk_seconds and interface_seconds (wall).");
+    py::class_<StaticCondensationSolver, LinearSolver, std::shared_ptr<StaticCondensationSolver>>(
+        m, "StaticCondensationSolver",
+        "Condenses a constant bulk onto the contact interface (linear_solver_settings.static_condensation).")
+        .def(py::init([](LinearSolver::Pointer inner, const std::string& mode, const std::string& bulk_not_linear) {
+                 return std::make_shared<StaticCondensationSolver>(std::move(inner), ParseStaticCondensationMode(mode),
+                                                                   bulk_not_linear);
+             }),
+             py::arg("inner"), py::arg("mode") = "auto", py::arg("bulk_not_linear") = "",
+             "inner: solver of the full system; mode: 'auto', 'on' or 'off'; bulk_not_linear: why the bodies' "
+             "stiffness may change ('' = it does not; 'auto' then refuses).")
+        .def("LastSolveWasCondensed", &StaticCondensationSolver::LastSolveWasCondensed)
+        .def("InnerSolver", &StaticCondensationSolver::InnerSolver, "The solver of the full system.");
     m.def(
         "CreateLinearSolver",
         [](const std::string& solver_type, double tolerance, int max_iteration, const std::string& ordering) {

@@ -19,6 +19,7 @@ from contact_app.analysis.solvers.convergence_criteria_factory import (
     ConvergenceCriterion,
     check_criterion_name,
 )
+from contact_app.analysis.solvers.mechanical_solver import bulk_not_linear, static_condensation_mode
 from contact_app.analysis.validation import error, not_supported
 from contact_app.legacy_keys import convert_legacy_keys
 from contact_app.parameters import Parameters, suggest
@@ -298,6 +299,25 @@ class ContactSolverMixin(SolverMixinBase):
         return super()._DofsWithReactions() + mortar_dofs(self.mortar_type)
 
     def _CreateLinearSolver(self) -> Any:
+        """The multiplier solver in the static condensation of a linear bulk.
+
+        ``linear_solver_settings.static_condensation`` (docs/theory/static_condensation.md): "auto"
+        condenses when the bodies are linear and the system is large, true whenever there is an
+        interface, false never; the solver reports which ran and why in the run summary.
+        """
+        solver = self._CreateMultiplierSolver()
+        mode = static_condensation_mode(self.settings["linear_solver_settings"])
+        reason = "" if mode == "off" else bulk_not_linear(self.GetComputingModelPart())
+        if mode == "on" and reason:
+            logger.warning(
+                "%s: true, but %s: the bulk is condensed again whenever it changes, and the "
+                "condensation ends when it changes on two consecutive solves",
+                self.settings["linear_solver_settings"].Where("static_condensation"),
+                reason,
+            )
+        return ca.StaticCondensationSolver(solver, mode, reason)
+
+    def _CreateMultiplierSolver(self) -> Any:
         """The structural linear solver, wrapped in the condensing solver for vector multipliers."""
         solver = super()._CreateLinearSolver()
         contact = self.settings["contact_settings"]

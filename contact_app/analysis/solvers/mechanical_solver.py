@@ -11,6 +11,7 @@ way.
 from __future__ import annotations
 
 import logging
+import re
 from pathlib import Path
 from typing import Any
 
@@ -31,14 +32,17 @@ from .convergence_criteria_factory import (
 logger = logging.getLogger("contact_app.analysis")
 
 #: Every key a ``linear_solver_settings`` block may hold (Kratos linear solver factories). Only
-#: ``solver_type``, ``tolerance``, ``max_iteration`` and ``ordering`` (contact_app's own: UMFPACK's
-#: fill-reducing ordering, "auto", "amd" or "metis") change what contact_app does; the others
-#: tune Kratos' iterative solvers and are accepted and ignored.
+#: ``solver_type``, ``tolerance``, ``max_iteration``, ``ordering`` (contact_app's own: UMFPACK's
+#: fill-reducing ordering, "auto", "amd" or "metis") and ``static_condensation`` (contact_app's
+#: own: "auto", true or false; None here because it takes a string or a bool, checked by
+#: :func:`static_condensation_mode`) change what contact_app does; the others tune Kratos'
+#: iterative solvers and are accepted and ignored.
 LINEAR_SOLVER_KEYS: dict[str, Any] = {
     "solver_type": "",
     "tolerance": 1.0e-6,
     "max_iteration": 1000,
     "ordering": "auto",
+    "static_condensation": None,
     "scaling": False,
     "verbosity": 0,
     "echo_level": 0,
@@ -123,6 +127,59 @@ STOP_DEFAULT_REASON = (
 #: Step cutting of an inverted element when the solver has no settings of its own (no
 #: contact_settings): Kratos' adaptative_strategy defaults, split_factor 10, max_number_splits 3.
 INVERTED_ELEMENT_CUTTING = (10.0, 3)
+
+
+#: Element families whose stiffness does not depend on the displacement (with a linear law).
+LINEAR_ELEMENT_FAMILIES = ("SmallDisplacementElement", "AxisymSmallDisplacementElement")
+_ELEMENT_FAMILY = re.compile(r"([A-Za-z]+?)\dD\d+N #")
+
+
+def static_condensation_mode(linear: Parameters) -> str:
+    """``linear_solver_settings.static_condensation`` as the solver's mode: "auto", "on" or "off".
+
+    Raises:
+        InputError: neither "auto" nor a bool.
+
+    """
+    if not linear.Has("static_condensation"):
+        return "auto"
+    value = linear["static_condensation"]
+    if value.IsBool():
+        return "on" if value.GetBool() else "off"
+    if value.IsString() and value.GetString() == "auto":
+        return "auto"
+    raise error(
+        linear,
+        "static_condensation",
+        f"static_condensation is {value.WriteJsonString()}",
+        '"auto", true or false',
+        'remove the key ("auto": condense when the bodies are linear and the system is large), '
+        "or give true / false",
+    )
+
+
+def bulk_not_linear(part: Any) -> str:
+    """Why the stiffness of the bodies of ``part`` may change between iterations ("" = it cannot).
+
+    It cannot for small-displacement elements (kinematics on the initial configuration) with a
+    linear elastic law; finite-strain elements and the hyperelastic and Saint Venant-Kirchhoff
+    laws change it with the displacement (docs/theory/static_condensation.md).
+    """
+    laws: dict[int, str] = {}
+    for element in part.Elements:
+        info = element.Info()
+        match = _ELEMENT_FAMILY.match(info)
+        family = match.group(1) if match else info
+        if family not in LINEAR_ELEMENT_FAMILIES:
+            return f"element {element.Id} is a {family}, whose stiffness follows the displacement"
+        properties = element.Properties
+        if properties.Id not in laws:
+            law = properties.GetValue(ca.CONSTITUTIVE_LAW)
+            laws[properties.Id] = law.Info() if law is not None else ""
+        if not laws[properties.Id].startswith("LinearElastic"):
+            name = laws[properties.Id] or "no constitutive law"
+            return f"element {element.Id} has {name}, not a linear elastic law"
+    return ""
 
 
 class MechanicalSolver:
@@ -362,6 +419,7 @@ class MechanicalSolver:
                 ) from None
         if linear.Has("tolerance"):
             positive(linear, "tolerance")
+        static_condensation_mode(linear)
         if linear.Has("ordering"):
             solver_type = linear["solver_type"].GetString() if linear.Has("solver_type") else ""
             try:

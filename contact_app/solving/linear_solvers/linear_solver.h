@@ -27,6 +27,14 @@ struct LinearSolverStatistics {
     double factor_flops = 0.0;       ///< floating-point operations of all numeric factorisations
     double symbolic_seconds = 0.0;   ///< CPU time of all symbolic analyses (ordering included)
     double numeric_seconds = 0.0;    ///< CPU time of all numeric factorisations
+    // Static condensation (StaticCondensationSolver; docs/theory/static_condensation.md):
+    std::string condensation;          ///< "" = not a condensing solver; "yes", or "no (why)"
+    std::size_t interface_size = 0;    ///< n_I of the last condensed solve
+    std::size_t bulk_size = 0;         ///< n_B of the last condensed solve
+    std::size_t bulk_factorizations = 0;
+    std::size_t condensed_solves = 0;
+    double bulk_seconds = 0.0;       ///< wall time of all bulk factorisations and Schur products
+    double interface_seconds = 0.0;  ///< wall time of all condensed solves (interface LU, bulk back-solves)
 };
 
 /// Solves A x = b for the global system (Kratos LinearSolver). Direct solvers keep their

@@ -99,7 +99,10 @@ def test_components_use_the_condensing_solver() -> None:
         ca.Model(), parameters, base_dir=path.parent, reporter=Reporter(quiet=True)
     )
     analysis.Run()
-    solver = analysis._GetSolver()._GetLinearSolver()
+    condensing = analysis._GetSolver()._GetLinearSolver()
+    assert isinstance(condensing, ca.StaticCondensationSolver)  # "auto": too small to condense
+    assert not condensing.LastSolveWasCondensed()
+    solver = condensing.InnerSolver()
     assert isinstance(solver, ca.MixedULMLinearSolver)
     assert solver.LastSolveWasCondensed()
     assert solver.LastCondensedMultipliers() > 0

@@ -1,0 +1,392 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "contact_app/solving/linear_solvers/static_condensation_solver.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <unordered_set>
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/Dense>
+#include <Eigen/UmfPackSupport>
+
+#include "contact_app/kernel/dof.h"
+#include "contact_app/kernel/exceptions.h"
+#include "contact_app/kernel/flags.h"
+#include "contact_app/kernel/model_part.h"
+#include "contact_app/kernel/node.h"
+#include "contact_app/kernel/variables.h"
+
+// LAPACK (OpenBLAS, threaded): the dense LU of the interface system.
+extern "C" void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
+
+namespace contact_app {
+
+namespace {
+
+using detail::Concat;
+
+constexpr const char* kModeKey = "linear_solver_settings.static_condensation";
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// splitmix64's finaliser: the entries of the bulk hash are summed, so it must spread every bit.
+std::uint64_t Mix(std::uint64_t x) {
+    x += 0x9e3779b97f4a7c15ULL;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+    return x ^ (x >> 31);
+}
+
+bool IsDisplacement(const Variable<double>& variable) {
+    return variable == DISPLACEMENT_X || variable == DISPLACEMENT_Y || variable == DISPLACEMENT_Z;
+}
+
+/// Columns per block of the multi-right-hand-side bulk solves: a dense block of about 128 MB (wider
+/// blocks run the supernodal solve at BLAS-3 speed).
+Eigen::Index BlockColumns(Eigen::Index bulk_size) {
+    return std::clamp<Eigen::Index>((Eigen::Index{16} << 20) / std::max<Eigen::Index>(bulk_size, 1), 16, 1024);
+}
+
+}  // namespace
+
+StaticCondensationMode ParseStaticCondensationMode(const std::string& name) {
+    if (name == "auto") return StaticCondensationMode::Auto;
+    if (name == "on") return StaticCondensationMode::On;
+    if (name == "off") return StaticCondensationMode::Off;
+    CONTACT_THROW(InputError, "unknown ", kModeKey, " \"", name, "\"\n  expected: \"auto\", true or false",
+                  "\n  fix: remove the key (\"auto\") or give true / false");
+}
+
+/// The factorised bulk block and the Schur product of one condensation. The interface DoFs the bulk
+/// couples to (C, displacements of interface nodes) are kept by identity, so the condensation
+/// survives a change of the other interface DoFs (the multipliers of each contact step).
+struct StaticCondensationSolver::Bulk {
+    std::vector<const Dof*> bulk_key;
+    std::vector<const Dof*> coupled;        // C, in the order of the columns of a_bc and of P
+    std::uint64_t hash = 0;
+    std::vector<std::uint64_t> dof_hashes;  // per bulk DoF: which ones a later change touches
+    SparseMatrixType a_bc, a_cb;            // A_BC (n_B × n_C) and A_CB (n_C × n_B)
+    SparseMatrixType a_bb;                  // kept for UmfPackLU, which refers to its matrix
+    std::unique_ptr<Eigen::CholmodSupernodalLLT<SparseMatrixType>> cholesky;  // A_BB symmetric positive definite
+    std::unique_ptr<Eigen::UmfPackLU<SparseMatrixType>> lu;                  // otherwise
+    Eigen::MatrixXd schur_product;          // P = A_CB A_BB⁻¹ A_BC, n_C × n_C
+
+    Eigen::MatrixXd SolveBulk(const Eigen::MatrixXd& rhs) const {
+        return cholesky ? Eigen::MatrixXd(cholesky->solve(rhs)) : Eigen::MatrixXd(lu->solve(rhs));
+    }
+};
+
+StaticCondensationSolver::StaticCondensationSolver(LinearSolver::Pointer inner, StaticCondensationMode mode,
+                                                   std::string bulk_not_linear)
+    : mInner(std::move(inner)), mMode(mode), mBulkNotLinear(std::move(bulk_not_linear)) {
+    CONTACT_CHECK(mInner != nullptr, InternalError, "static condensation created without an inner solver");
+}
+
+StaticCondensationSolver::~StaticCondensationSolver() = default;
+
+void StaticCondensationSolver::Clear() {
+    mInner->Clear();
+}
+
+std::string StaticCondensationSolver::Info() const {
+    return "static_condensation(" + mInner->Info() + ")";
+}
+
+LinearSolverStatistics StaticCondensationSolver::Statistics() const {
+    LinearSolverStatistics statistics = mInner->Statistics();
+    statistics.condensation = mStatistics.condensation;
+    statistics.interface_size = mStatistics.interface_size;
+    statistics.bulk_size = mStatistics.bulk_size;
+    statistics.bulk_factorizations = mStatistics.bulk_factorizations;
+    statistics.condensed_solves = mStatistics.condensed_solves;
+    statistics.bulk_seconds = mStatistics.bulk_seconds;
+    statistics.interface_seconds = mStatistics.interface_seconds;
+    return statistics;
+}
+
+void StaticCondensationSolver::ProvideAdditionalData(const std::vector<Dof*>& rDofSet, ModelPart& rModelPart) {
+    // The system size is only known at Solve (the elimination builder numbers fixed DoFs past it).
+    mDofs.assign(rDofSet.begin(), rDofSet.end());
+    // Conditions (contact pairs, and loads on the current configuration) may change their matrices
+    // at every iteration: their nodes belong to the interface, assembled now or not.
+    mConditionNodes.clear();
+    for (const auto& condition : rModelPart.Conditions())
+        for (std::size_t k = 0; k < condition->GetGeometry().size(); ++k)
+            mConditionNodes.insert(&condition->GetGeometry()[k]);
+    mHaveData = true;
+    if (mInner->AdditionalPhysicalDataIsNeeded()) mInner->ProvideAdditionalData(rDofSet, rModelPart);
+}
+
+void StaticCondensationSolver::Partition(std::size_t size) {
+    std::vector<const Dof*>& by_equation = mDofOfEquation;
+    by_equation.assign(size, nullptr);
+    for (const Dof* dof : mDofs)
+        if (dof->EquationId() < size) by_equation[dof->EquationId()] = dof;
+    mIsInterface.assign(size, 1);
+    mLocal.assign(size, 0);
+    mInterfaceKey.clear();
+    mBulkKey.clear();
+    for (std::size_t k = 0; k < size; ++k) {
+        const Dof* dof = by_equation[k];
+        const Node* node = dof != nullptr ? &dof->GetNode() : nullptr;
+        mIsInterface[k] = node == nullptr || !IsDisplacement(dof->GetVariable()) || node->Is(INTERFACE) ||
+                          mConditionNodes.count(node) || mPromotedNodes.count(node);
+        auto& key = mIsInterface[k] ? mInterfaceKey : mBulkKey;
+        mLocal[k] = static_cast<int>(key.size());
+        key.push_back(dof);
+    }
+}
+
+std::string StaticCondensationSolver::Refusal(std::size_t size, std::size_t interface_size) const {
+    if (interface_size == 0) return "no contact interface: no equation of an INTERFACE node or a multiplier";
+    if (interface_size == size) return "every equation is on the interface";
+    if (mMode == StaticCondensationMode::On) return "";
+    if (!mBulkNotLinear.empty()) return mBulkNotLinear;
+    if (size < kAutoCondensationMinimumSize)
+        return Concat(size, " equations, fewer than the ", kAutoCondensationMinimumSize, " from which \"auto\" condenses");
+    if (static_cast<double>(interface_size) > kAutoCondensationMaximumShare * static_cast<double>(size))
+        return Concat("interface of ", interface_size, " equations, over ", 100.0 * kAutoCondensationMaximumShare,
+                      " % of the ", size);
+    if (interface_size > kAutoCondensationMaximumInterface)
+        return Concat("interface of ", interface_size, " equations, over the ", kAutoCondensationMaximumInterface,
+                      " a dense Schur complement may hold");
+    return "";
+}
+
+std::uint64_t StaticCondensationSolver::BulkHash(const SparseMatrixType& rA, std::vector<std::uint64_t>& rDofHashes) const {
+    // Sums of per-entry hashes: independent of the order of the entries, so of the pattern of the
+    // interface block (it changes with the contact pairs). Bulk DoFs by position, interface DoFs by
+    // identity (their numbering changes with the multipliers). Per bulk DoF too, to find what changed.
+    rDofHashes.assign(mBulkKey.size(), 0);
+    auto identity = [&](std::size_t k) -> std::uint64_t {
+        if (!mIsInterface[k]) return static_cast<std::uint64_t>(mLocal[k]) << 1;
+        return (static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(mDofOfEquation[k])) << 1) | 1U;
+    };
+    std::uint64_t hash = 0;
+    for (Eigen::Index j = 0; j < rA.outerSize(); ++j) {
+        const auto column = static_cast<std::size_t>(j);
+        const bool column_interface = mIsInterface[column];
+        const std::uint64_t column_identity = Mix(identity(column));
+        for (SparseMatrixType::InnerIterator entry(rA, j); entry; ++entry) {
+            const auto i = static_cast<std::size_t>(entry.row());
+            if ((mIsInterface[i] && column_interface) || entry.value() == 0.0) continue;
+            std::uint64_t bits;
+            const double value = entry.value();
+            std::memcpy(&bits, &value, sizeof bits);
+            const std::uint64_t entry_hash = Mix(bits ^ Mix(column_identity + identity(i)));
+            hash += entry_hash;
+            if (!mIsInterface[i]) rDofHashes[static_cast<std::size_t>(mLocal[i])] += entry_hash;
+            if (!column_interface) rDofHashes[static_cast<std::size_t>(mLocal[column])] += entry_hash;
+        }
+    }
+    return hash;
+}
+
+void StaticCondensationSolver::Condense(const SparseMatrixType& rA, std::uint64_t hash,
+                                        std::vector<std::uint64_t> dof_hashes) {
+    const auto start = std::chrono::steady_clock::now();
+    mBulk.reset();  // the old factor's memory first
+    auto bulk = std::make_unique<Bulk>();
+    const auto n = static_cast<std::size_t>(rA.rows());
+    // C: the interface equations with an entry in a bulk row or column.
+    std::vector<int> coupled_index(n, -1);
+    for (Eigen::Index j = 0; j < rA.outerSize(); ++j)
+        for (SparseMatrixType::InnerIterator entry(rA, j); entry; ++entry) {
+            const auto i = static_cast<std::size_t>(entry.row()), column = static_cast<std::size_t>(j);
+            if (mIsInterface[i] != mIsInterface[column] && entry.value() != 0.0)
+                coupled_index[mIsInterface[i] ? i : column] = 0;
+        }
+    for (std::size_t k = 0; k < n; ++k)
+        if (coupled_index[k] == 0) {
+            coupled_index[k] = static_cast<int>(bulk->coupled.size());
+            bulk->coupled.push_back(mDofOfEquation[k]);
+        }
+    const auto n_c = static_cast<Eigen::Index>(bulk->coupled.size());
+    const auto n_b = static_cast<Eigen::Index>(mBulkKey.size());
+    // The three blocks, column by column; rows arrive sorted because each set keeps the equation order.
+    Eigen::VectorXi bb_sizes = Eigen::VectorXi::Zero(n_b), cb_sizes = Eigen::VectorXi::Zero(n_b),
+                    bc_sizes = Eigen::VectorXi::Zero(n_c);
+    for (Eigen::Index j = 0; j < rA.outerSize(); ++j) {
+        const auto column = static_cast<std::size_t>(j);
+        for (SparseMatrixType::InnerIterator entry(rA, j); entry; ++entry) {
+            const bool row_interface = mIsInterface[static_cast<std::size_t>(entry.row())];
+            if (mIsInterface[column]) bc_sizes[std::max(coupled_index[column], 0)] += !row_interface;
+            else ++(row_interface ? cb_sizes : bb_sizes)[mLocal[column]];
+        }
+    }
+    SparseMatrixType a_bb(n_b, n_b);
+    a_bb.reserve(bb_sizes);
+    bulk->a_cb.resize(n_c, n_b);
+    bulk->a_cb.reserve(cb_sizes);
+    bulk->a_bc.resize(n_b, n_c);
+    bulk->a_bc.reserve(bc_sizes);
+    for (Eigen::Index j = 0; j < rA.outerSize(); ++j) {
+        const auto column = static_cast<std::size_t>(j);
+        for (SparseMatrixType::InnerIterator entry(rA, j); entry; ++entry) {
+            const auto i = static_cast<std::size_t>(entry.row());
+            if ((mIsInterface[column] && mIsInterface[i]) || entry.value() == 0.0) continue;
+            if (mIsInterface[column]) bulk->a_bc.insert(mLocal[i], coupled_index[column]) = entry.value();
+            else if (mIsInterface[i]) bulk->a_cb.insert(coupled_index[i], mLocal[column]) = entry.value();
+            else a_bb.insert(mLocal[i], mLocal[column]) = entry.value();
+        }
+    }
+    a_bb.makeCompressed();
+    bulk->a_cb.makeCompressed();
+    bulk->a_bc.makeCompressed();
+
+    // CHOLMOD reads one triangle: take it only when A_BB is symmetric to round-off of the element matrices.
+    const bool symmetric = [&] {
+        const SparseMatrixType asymmetry = a_bb - SparseMatrixType(a_bb.transpose());
+        const double scale = a_bb.nonZeros() ? a_bb.coeffs().cwiseAbs().maxCoeff() : 0.0;
+        return (asymmetry.nonZeros() ? asymmetry.coeffs().cwiseAbs().maxCoeff() : 0.0) <= 1e-14 * scale;
+    }();
+    if (symmetric) {
+        bulk->cholesky = std::make_unique<Eigen::CholmodSupernodalLLT<SparseMatrixType>>();
+        bulk->cholesky->compute(a_bb);
+        if (bulk->cholesky->info() != Eigen::Success) bulk->cholesky.reset();
+    }
+    if (!bulk->cholesky) {
+        bulk->a_bb = std::move(a_bb);
+        bulk->lu = std::make_unique<Eigen::UmfPackLU<SparseMatrixType>>();
+        bulk->lu->compute(bulk->a_bb);
+        CONTACT_CHECK(bulk->lu->info() == Eigen::Success, ConvergenceError, Info(), ": the ", n_b, "x", n_b,
+                      " bulk block (every equation off the contact interface) is singular",
+                      "\n  fix: check the boundary conditions (a body held only through contact has rigid-body "
+                      "modes), or set ", kModeKey, " to false");
+    }
+
+    // P in blocks of columns of A_BC (dense right-hand sides of the bulk factor).
+    bulk->schur_product.resize(n_c, n_c);
+    const Eigen::Index block = BlockColumns(n_b);
+    for (Eigen::Index first = 0; first < n_c; first += block) {
+        const Eigen::Index width = std::min(block, n_c - first);
+        const Eigen::MatrixXd rhs = Eigen::MatrixXd(bulk->a_bc.middleCols(first, width));
+        bulk->schur_product.middleCols(first, width) = bulk->a_cb * bulk->SolveBulk(rhs);
+    }
+    CONTACT_CHECK(bulk->schur_product.allFinite(), ConvergenceError, Info(),
+                  ": the Schur complement of the bulk has non-finite values (the bulk block is numerically singular)",
+                  "\n  fix: check the boundary conditions, or set ", kModeKey, " to false");
+    bulk->bulk_key = mBulkKey;
+    bulk->hash = hash;
+    bulk->dof_hashes = std::move(dof_hashes);
+    mBulk = std::move(bulk);
+    ++mStatistics.bulk_factorizations;
+    mStatistics.bulk_seconds += SecondsSince(start);
+}
+
+void StaticCondensationSolver::SolveCondensed(const SparseMatrixType& rA, SystemVectorType& rX,
+                                              const SystemVectorType& rB) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto n = static_cast<std::size_t>(rA.rows());
+    const auto n_i = static_cast<Eigen::Index>(mInterfaceKey.size());
+    const auto n_b = static_cast<Eigen::Index>(mBulkKey.size());
+    const auto n_c = static_cast<Eigen::Index>(mBulk->coupled.size());
+    std::vector<Eigen::Index> position(static_cast<std::size_t>(n_c));  // of each C DoF in I now
+    for (Eigen::Index c = 0; c < n_c; ++c)
+        position[static_cast<std::size_t>(c)] = mLocal[mBulk->coupled[static_cast<std::size_t>(c)]->EquationId()];
+    Eigen::VectorXd x_i(n_i), b_b(n_b);
+    for (std::size_t k = 0; k < n; ++k) (mIsInterface[k] ? x_i : b_b)[mLocal[k]] = rB[static_cast<Eigen::Index>(k)];
+
+    // S = A_II − P: the interface block of this iteration (contact and multipliers included).
+    Eigen::MatrixXd schur = Eigen::MatrixXd::Zero(n_i, n_i);
+    for (std::size_t j = 0; j < n; ++j) {
+        if (!mIsInterface[j]) continue;
+        for (SparseMatrixType::InnerIterator entry(rA, static_cast<Eigen::Index>(j)); entry; ++entry)
+            if (mIsInterface[static_cast<std::size_t>(entry.row())])
+                schur(mLocal[static_cast<std::size_t>(entry.row())], mLocal[j]) += entry.value();
+    }
+    for (Eigen::Index c = 0; c < n_c; ++c)
+        for (Eigen::Index r = 0; r < n_c; ++r)
+            schur(position[static_cast<std::size_t>(r)], position[static_cast<std::size_t>(c)]) -=
+                mBulk->schur_product(r, c);
+    // b_I − A_IB A_BB⁻¹ b_B, through the coupled rows.
+    const Eigen::VectorXd reduction = mBulk->a_cb * mBulk->SolveBulk(b_b);
+    for (Eigen::Index r = 0; r < n_c; ++r) x_i[position[static_cast<std::size_t>(r)]] -= reduction[r];
+
+    const int size = static_cast<int>(n_i);
+    std::vector<int> pivots(static_cast<std::size_t>(n_i));
+    int info = 0;
+    dgetrf_(&size, &size, schur.data(), &size, pivots.data(), &info);
+    CONTACT_CHECK(info == 0, ConvergenceError, Info(), ": the ", n_i, "x", n_i,
+                  " interface system is singular (LAPACK dgetrf info ", info, ")",
+                  "\n  fix: check the contact settings (a multiplier with no stiffness makes the system singular)");
+    for (int k = 0; k < size; ++k) std::swap(x_i[k], x_i[pivots[static_cast<std::size_t>(k)] - 1]);
+    schur.triangularView<Eigen::UnitLower>().solveInPlace(x_i);
+    schur.triangularView<Eigen::Upper>().solveInPlace(x_i);
+    Eigen::VectorXd x_c(n_c);
+    for (Eigen::Index c = 0; c < n_c; ++c) x_c[c] = x_i[position[static_cast<std::size_t>(c)]];
+    const Eigen::VectorXd x_b = mBulk->SolveBulk(Eigen::MatrixXd(b_b - mBulk->a_bc * x_c));
+    CONTACT_CHECK(x_i.allFinite() && x_b.allFinite(), ConvergenceError, Info(),
+                  ": the solve produced non-finite values (the interface system is numerically singular)");
+    rX.resize(static_cast<Eigen::Index>(n));
+    for (std::size_t k = 0; k < n; ++k) rX[static_cast<Eigen::Index>(k)] = mIsInterface[k] ? x_i[mLocal[k]] : x_b[mLocal[k]];
+    ++mStatistics.condensed_solves;
+    mStatistics.interface_seconds += SecondsSince(start);
+}
+
+bool StaticCondensationSolver::CoupledDofsPresent(std::size_t size) const {
+    for (const Dof* dof : mBulk->coupled)
+        if (dof->EquationId() >= size || mDofOfEquation[dof->EquationId()] != dof || !mIsInterface[dof->EquationId()])
+            return false;
+    return true;
+}
+
+void StaticCondensationSolver::Solve(SparseMatrixType& rA, SystemVectorType& rX, SystemVectorType& rB) {
+    mLastCondensed = false;
+    const bool have_data = mHaveData;
+    mHaveData = false;
+    auto full_solve = [&](const std::string& why) {
+        mStatistics.condensation = "no (" + why + ")";
+        mInner->Solve(rA, rX, rB);
+    };
+    if (mMode == StaticCondensationMode::Off) return full_solve(Concat("switched off by ", kModeKey));
+    if (!mStopped.empty()) return full_solve(mStopped);
+    if (!have_data) return full_solve("no DoF data: master-slave constraints are active");
+
+    const auto n = static_cast<std::size_t>(rA.rows());
+    Partition(n);
+    const std::string refusal = Refusal(n, mInterfaceKey.size());
+    if (!refusal.empty()) return full_solve(refusal);
+
+    std::vector<std::uint64_t> dof_hashes;
+    std::uint64_t hash = BulkHash(rA, dof_hashes);
+    const bool same_sets = mBulk && mBulk->bulk_key == mBulkKey && CoupledDofsPresent(n);
+    if (same_sets && mBulk->hash == hash) {
+        mBulkChangedLastSolve = false;
+    } else {
+        if (same_sets) {
+            // The bulk changed. Twice in a row is a stiffness that follows the iterate (a non-linear body).
+            // Once: a few DoFs (an entity that was not foreseen) join the interface, or all of them (a new
+            // time step size) are condensed again.
+            if (mBulkChangedLastSolve) {
+                mStopped = "the bulk block changed on two consecutive solves: the bodies' stiffness is not constant";
+                mBulk.reset();
+                return full_solve(mStopped);
+            }
+            mBulkChangedLastSolve = true;
+            std::unordered_set<const Node*> changed;
+            for (std::size_t b = 0; b < dof_hashes.size(); ++b)
+                if (dof_hashes[b] != mBulk->dof_hashes[b]) changed.insert(&mBulkKey[b]->GetNode());
+            std::size_t joining = 0;
+            for (const Dof* dof : mBulkKey) joining += changed.count(&dof->GetNode());
+            const auto joined = static_cast<double>(mInterfaceKey.size() + joining);
+            if (joined <= kAutoCondensationMaximumShare * static_cast<double>(n) &&
+                joined <= static_cast<double>(kAutoCondensationMaximumInterface)) {
+                mPromotedNodes.insert(changed.begin(), changed.end());
+                Partition(n);
+                hash = BulkHash(rA, dof_hashes);
+            }
+        }
+        Condense(rA, hash, std::move(dof_hashes));
+    }
+    SolveCondensed(rA, rX, rB);
+    mLastCondensed = true;
+    mStatistics.condensation = "yes";
+    mStatistics.interface_size = mInterfaceKey.size();
+    mStatistics.bulk_size = mBulkKey.size();
+}
+
+}  // namespace contact_app

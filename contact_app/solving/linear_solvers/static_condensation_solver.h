@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+#include "contact_app/solving/linear_solvers/linear_solver.h"
+
+namespace contact_app {
+
+class Node;
+
+/// linear_solver_settings.static_condensation: "auto" (condense when the bulk is linear and the
+/// condensation pays), true (condense whenever the system has an interface and a bulk), false (never).
+enum class StaticCondensationMode { Auto, On, Off };
+
+/// "auto", "on" or "off" → the mode. @throws InputError naming linear_solver_settings.static_condensation.
+StaticCondensationMode ParseStaticCondensationMode(const std::string& name);
+
+/// "auto" condenses systems of at least this many equations (below it one sparse LU per iteration is
+/// cheaper than the dense interface LU: benchmarks/README.md, "Static condensation")...
+inline constexpr std::size_t kAutoCondensationMinimumSize = 20000;
+/// ...whose interface holds at most this share of the equations...
+inline constexpr double kAutoCondensationMaximumShare = 0.1;
+/// ...and at most this many equations (the dense Schur complement takes 8 n_I² bytes: 0.5 GB at 8000).
+inline constexpr std::size_t kAutoCondensationMaximumInterface = 8000;
+
+/// Solves A x = b by condensing a constant bulk onto the contact interface (docs/theory/static_condensation.md).
+/// Interface I: every DoF of the INTERFACE nodes and every DoF that is not a displacement (the multipliers);
+/// bulk B: the other equations, coupled by the elements only. With linear bodies A_BB, A_BI and A_IB do not
+/// change, so the bulk is factorised once (CHOLMOD if symmetric, else UMFPACK), P = A_IB A_BB⁻¹ A_BI is kept
+/// dense, and each solve is  S = A_II − P,  S x_I = b_I − A_IB A_BB⁻¹ b_B (dense LU),  x_B = A_BB⁻¹(b_B − A_BI x_I).
+/// Every solve hashes the B rows and columns: a changed bulk is condensed again, one that changes on two
+/// consecutive solves ends the condensation. Without DoF data (master–slave constraints), or when it does not
+/// apply, the inner solver solves the full system; Statistics().condensation says which and why.
+class StaticCondensationSolver : public LinearSolver {
+public:
+    /// @param inner solver of the full system when not condensing (not null, shared with the caller)
+    /// @param bulk_not_linear why the bodies' stiffness may change ("" = it does not); "auto" then refuses
+    StaticCondensationSolver(LinearSolver::Pointer inner, StaticCondensationMode mode, std::string bulk_not_linear = "");
+    ~StaticCondensationSolver() override;
+
+    /// @throws ConvergenceError if the interface system is singular, naming its size
+    void Solve(SparseMatrixType& rA, SystemVectorType& rX, SystemVectorType& rB) override;
+    /// Clears the inner solver only: the condensed bulk is checked at every solve and survives the
+    /// DoF-set rebuild of every contact step.
+    void Clear() override;
+    std::string Info() const override;
+    std::size_t NumberOfSymbolicAnalyses() const override { return mInner->NumberOfSymbolicAnalyses(); }
+    /// The inner solver's figures plus the condensation fields.
+    LinearSolverStatistics Statistics() const override;
+    bool AdditionalPhysicalDataIsNeeded() const override { return true; }
+    /// Classifies the equations (interface or bulk) and passes the data on to the inner solver.
+    void ProvideAdditionalData(const std::vector<Dof*>& rDofSet, ModelPart& rModelPart) override;
+
+    /// Whether the last Solve was condensed.
+    bool LastSolveWasCondensed() const { return mLastCondensed; }
+    /// The solver of the full system.
+    LinearSolver::Pointer InnerSolver() const { return mInner; }
+
+private:
+    struct Bulk;
+    /// "" if the condensation applies to the system described by the last data, else why not.
+    std::string Refusal(std::size_t size, std::size_t interface_size) const;
+    /// Classifies the equations of a system of @p size (mIsInterface, mLocal and the keys).
+    void Partition(std::size_t size);
+    /// Hash of every non-zero of A off the interface block; @p rDofHashes gets one per bulk DoF.
+    std::uint64_t BulkHash(const SparseMatrixType& rA, std::vector<std::uint64_t>& rDofHashes) const;
+    void Condense(const SparseMatrixType& rA, std::uint64_t hash, std::vector<std::uint64_t> dof_hashes);
+    /// True if every interface DoF of the condensed bulk is an interface equation of this system.
+    bool CoupledDofsPresent(std::size_t size) const;
+    void SolveCondensed(const SparseMatrixType& rA, SystemVectorType& rX, const SystemVectorType& rB);
+
+    LinearSolver::Pointer mInner;
+    StaticCondensationMode mMode;
+    std::string mBulkNotLinear;
+    bool mHaveData = false;
+    std::vector<const Dof*> mDofs;          // the DoF set of the next solve
+    std::unordered_set<const Node*> mConditionNodes;  // nodes of the model part's conditions
+    std::unordered_set<const Node*> mPromotedNodes;   // bulk nodes whose rows changed once: interface for the run
+    std::vector<const Dof*> mDofOfEquation;  // per equation of the next solve
+    std::vector<char> mIsInterface;        // per equation of the next solve
+    std::vector<int> mLocal;               // position of each equation in its set (I or B)
+    std::vector<const Dof*> mInterfaceKey;  // the DoFs of each set, in equation order
+    std::vector<const Dof*> mBulkKey;
+    std::unique_ptr<Bulk> mBulk;
+    bool mBulkChangedLastSolve = false;
+    std::string mStopped;  // why the condensation was given up for the run ("" = it was not)
+    bool mLastCondensed = false;
+    LinearSolverStatistics mStatistics;
+};
+
+}  // namespace contact_app
