@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include "automatic_differentiation/ad_helpers.h"
 #include "contact_app/application.h"
 #include "contact_app/kernel/exceptions.h"
 #include "custom_conditions/mortar_contact_condition.h"
@@ -119,6 +120,23 @@ template <class T, int TDim, int TNS, int TNM, class TState, class TVector>
 void SpreadNormalForce(const TState& s, int j, const T& force, TVector& rhs) {
     const Eigen::Matrix<T, TDim, 1> f = force * s.normals.row(j).transpose();
     SpreadForce<T, TDim, TNS, TNM>(s, j, f, rhs);
+}
+
+/// Records at slave node j of a penalty pair (AD pass) what the other pairs of the node need for their coupling
+/// blocks (nodal_gap_coupling.h): b_j = S_j[@p force_per_gap] in values and the gradient of @p penalty_gap, this
+/// pair's part of ∂(ηG)_j/∂q.
+template <class T, int TDim, int TNS, int TNM, class TState, class TRecord>
+void RecordNodalGapCoupling(const TState& s, int j, const Eigen::Matrix<double, TDim, 1>& force_per_gap,
+                            const T& penalty_gap, TRecord& record) {
+    constexpr int slave_offset = TDim * TNM;
+    auto& b = record.force_per_gap[j];
+    b.setZero();
+    for (int c = 0; c < TDim; ++c) {
+        for (int a = 0; a < TNS; ++a) b[slave_offset + a * TDim + c] += Value(s.operators.D(j, a)) * force_per_gap[c];
+        for (int l = 0; l < TNM; ++l) b[l * TDim + c] -= Value(s.operators.M(j, l)) * force_per_gap[c];
+    }
+    record.gap_gradient[j] = penalty_gap.Derivatives();
+    record.coupled[j] = true;
 }
 
 /// The ALM constants: k = SCALE_FACTOR (ProcessInfo) and the nodal ε_j (positive on the inactive nodes, which

@@ -43,7 +43,7 @@ struct PairNodalShare {
 /// - the nodal weighted slip S_j = WEIGHTED_SLIP, rebuilt as Ŝ_j(q) = S_j + (s_j(q) − s_j⁰)/ω_j.
 /// At the state of the explicit pass both equal the nodal values, and a nodal law weighted by ω_j in each pair
 /// assembles (Σ_c ω_j^c = 1) to the nodal law with its exact derivative. A node without a valid share keeps the pair's
-/// own quantities (ω = 1, Q̂ = g̃(q), Ŝ = s(q)).
+/// own quantities (ω = 1, Q̂ = g̃(q), Ŝ = s(q)). The penalty families push with ε η̂_j Ĝ_j (PenaltyGap).
 template <int TDim, int TNumNodes>
 struct NodalInterfaceMap {
     Eigen::Matrix<double, TNumNodes, 1> weight = Eigen::Matrix<double, TNumNodes, 1>::Ones();             ///< ω_j
@@ -53,6 +53,17 @@ struct NodalInterfaceMap {
     template <class T>
     T TransmittedGap(int j, const T& pair_gap) const {
         return pair_gap + gap_offset[j];
+    }
+    Eigen::Matrix<double, TNumNodes, 1> nodal_gap_offset = Eigen::Matrix<double, TNumNodes, 1>::Zero();  ///< G − g̃⁰
+    Eigen::Matrix<double, TNumNodes, 1> penalty_share = Eigen::Matrix<double, TNumNodes, 1>::Ones();  ///< η = Σa²/A²
+    /// η_j Ĝ_j, the gap a penalty node is pushed with (λ̄ = ε η G, docs/theory/mortar.md §7 "Nodal penalty"), as a
+    /// function of this pair's weighted gap g̃_j: Ĝ = G + g̃ − g̃⁰. Its derivative is this pair's part of η ∂G; the
+    /// other pairs' parts enter the tangent through the nodal coupling (nodal_gap_coupling.h). η is held constant by
+    /// the tangent (measured: with its derivative the ironing example's pressing steps cycle their active set).
+    /// Without a valid share: the pair's own g̃ (η = 1).
+    template <class T>
+    T PenaltyGap(int j, const T& pair_gap) const {
+        return (pair_gap + nodal_gap_offset[j]) * penalty_share[j];
     }
     Eigen::Matrix<double, TNumNodes, TDim> transmitted_slip_offset =
         Eigen::Matrix<double, TNumNodes, TDim>::Zero();  ///< T − ω s⁰
@@ -81,6 +92,8 @@ NodalInterfaceMap<TDim, TNumNodes> MakeNodalInterfaceMap(const Geometry& slave,
         if (!(share.area[j] > 0.0) || !(total_area >= share.area[j] * (1.0 - 1e-12))) continue;
         map.weight[j] = share.area[j] / total_area;
         map.gap_offset[j] = ContactUtilities::TransmittedWeightedGap(node) - share.gap[j];
+        map.nodal_gap_offset[j] = node.FastGetSolutionStepValue(WEIGHTED_GAP) - share.gap[j];
+        map.penalty_share[j] = node.GetValue(SQUARED_PAIR_AREA) / (total_area * total_area);
         if (frictional) {
             map.slip_offset.row(j) = node.FastGetSolutionStepValue(WEIGHTED_SLIP).template head<TDim>().transpose() -
                                      share.slip.row(j) / map.weight[j];
@@ -92,12 +105,13 @@ NodalInterfaceMap<TDim, TNumNodes> MakeNodalInterfaceMap(const Geometry& slave,
     return map;
 }
 
-/// What the explicit pass adds to slave node j for this pair: g̃ to WEIGHTED_GAP, a to NODAL_AREA and a·g̃ to
-/// AREA_WEIGHTED_PAIR_GAP (the slip is added by the frictional families).
+/// What the explicit pass adds to slave node j for this pair: g̃ to WEIGHTED_GAP, a to NODAL_AREA, a·g̃ to
+/// AREA_WEIGHTED_PAIR_GAP and a² to SQUARED_PAIR_AREA (the slip is added by the frictional families).
 inline void AddPairShareToNode(Node& node, double area, double gap) {
     node.FastGetSolutionStepValue(WEIGHTED_GAP) += gap;
     node.SetValue(NODAL_AREA, node.GetValue(NODAL_AREA) + area);
     node.SetValue(AREA_WEIGHTED_PAIR_GAP, node.GetValue(AREA_WEIGHTED_PAIR_GAP) + area * gap);
+    node.SetValue(SQUARED_PAIR_AREA, node.GetValue(SQUARED_PAIR_AREA) + area * area);
 }
 
 }  // namespace contact_app

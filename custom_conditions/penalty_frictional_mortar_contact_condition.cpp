@@ -1,39 +1,53 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_conditions/penalty_frictional_mortar_contact_condition.h"
 
+#include <type_traits>
+
 namespace contact_app {
 namespace {
 
 using namespace frictional_detail;
 
-/// RHS of docs/theory/contact_residuals.md §7, q = [u2 (d·n_m), u1 (d·n_s)]: S_j[δ_j(ε_j g̃_j n_j + τ_j)] on the
-/// active nodes, nothing on the inactive ones. The tangential traction is a return map (docs/theory/mortar.md §8) on
-/// the elastic slip e_j = TANGENT_SLIP carried over from the previous steps plus the slip of the step: stick
-/// τ = κε(P e_j + s_j), slip τ = −μ ε g̃_j t_j along the nodal trial t = (P e + T̂)/|P e + T̂|, T̂ the transmitted slip
-/// Σ_c ω^c s^c (docs/theory/mortar.md §7: what the stick rows of all pairs transmit, as Q for the normal), so that
-/// every pair transmits
-/// |τ| = μ |ε g̃|.
-template <class T, int TDim, int TNS, int TNM, class TState, class TVector>
+/// RHS of docs/theory/contact_residuals.md §7 with B2 fixed, q = [u2 (d·n_m), u1 (d·n_s)]: S_j[δ_j(λ̄_j n_j + τ_j)] on the
+/// active nodes, nothing on the inactive ones, with the nodal penalty pressure λ̄_j = ε_j η_j Ĝ_j (Ĝ the node's
+/// weighted gap over all its pairs, η_j = Σ_c a_c² / A_j²: docs/theory/mortar.md §7 "Nodal penalty"). The tangential
+/// traction is a return map (docs/theory/mortar.md §8) on the elastic slip e_j = TANGENT_SLIP carried over from the
+/// previous steps plus the slip of the step: stick τ = κε(P e_j + s_j), slip τ = −μ λ̄_j t_j along the nodal trial
+/// t = (P e + T̂)/|P e + T̂|, T̂ the transmitted slip Σ_c ω^c s^c (what the stick rows of all pairs transmit), so that
+/// every pair transmits |τ| = μ |λ̄|. In the AD pass @p record keeps b_j = ∂RHS/∂(ηG)_j = S_j[δ ε (n − μ t)] (slip)
+/// or S_j[δ ε n] (stick) and this pair's ∂(ηG)_j/∂q for the other pairs' tangent blocks (nodal_gap_coupling.h).
+template <class T, int TDim, int TNS, int TNM, class TState, class TVector, class TRecord>
 void AddPenaltyFrictionalResidual(const TState& s, const FrictionalParameters<TDim, TNS>& p,
                                   const SlipData<TDim, TNS, TNM>& slip, const NodalInterfaceMap<TDim, TNS>& nodal,
-                                  const Eigen::Matrix<double, TNS, TDim>& elastic_slip, TVector& rhs) {
+                                  const Eigen::Matrix<double, TNS, TDim>& elastic_slip, TVector& rhs, TRecord* record) {
     using Vec = Eigen::Matrix<T, TDim, 1>;
     for (int j = 0; j < TNS; ++j) {
         if (!p.nodal.active[j]) continue;
         const double eps = p.nodal.penalty[j];
-        const T gap = PairGap<T, TDim>(s, j);
+        const T gap = nodal.PenaltyGap(j, PairGap<T, TDim>(s, j));
+        const T pressure = eps * gap;  // λ̄ < 0 in contact
         const Vec n = s.normals.row(j).transpose();
         const Vec carried = ProjectTangent<T, TDim>(s, j, Vec(elastic_slip.row(j).transpose().template cast<T>()));
         const Vec pair_slip = TangentSlip<T, TDim, TNS, TNM>(s, slip, j);
-        Vec force = n * (eps * gap);
-        if (p.slip[j]) {  // Coulomb: |τ| = μ ε |g̃| along the nodal trial (ε g̃ < 0 in contact)
+        Vec force = n * pressure;
+        Eigen::Matrix<double, TDim, 1> force_per_pressure = Values(n);
+        if (p.slip[j]) {  // Coulomb: |τ| = μ |λ̄| along the nodal trial
             const Vec trial = (carried + nodal.TransmittedSlip(j, pair_slip)) * (p.tangent_factor * eps);
-            force += SlipDirection<T, TDim, TNS>(trial, p, j, std::abs(eps * Value(gap)) + 1e-300) *
-                     (-p.mu[j] * eps * gap);
+            const Vec direction = SlipDirection<T, TDim, TNS>(trial, p, j, std::abs(Value(pressure)) + 1e-300);
+            force -= direction * (p.mu[j] * pressure);
+            force_per_pressure -= p.mu[j] * Values(direction);
         } else {
             force += (carried + pair_slip) * (p.tangent_factor * eps);
         }
         SpreadForce<T, TDim, TNS, TNM>(s, j, Vec(force * p.nodal.dynamic_factor[j]), rhs);
+        if constexpr (!std::is_same_v<T, double>) {
+            if (record == nullptr) continue;
+            RecordNodalGapCoupling<T, TDim, TNS, TNM>(
+                s, j, Eigen::Matrix<double, TDim, 1>(force_per_pressure * (eps * p.nodal.dynamic_factor[j])), gap,
+                *record);
+        } else {
+            (void)record;
+        }
     }
 }
 
@@ -135,7 +149,25 @@ void PENF_CLASS::AddFrictionalResidual(const State<T>& state, const ProcessInfo&
     const auto slip = MakeSlipData<TDim, TNS, TNM>(*this, mPreviousMortarOperators, AnyActive(p));
     AddPenaltyFrictionalResidual<T, TDim, TNS, TNM>(state, p, slip,
                                                     MakeNodalInterfaceMap<TDim, TNS>(slave, this->NodalShare(), true),
-                                                    ElasticSlips<TDim, TNS>(slave), rhs);
+                                                    ElasticSlips<TDim, TNS>(slave), rhs, &mCouplingRecord);
+}
+
+PENF_TEMPLATE
+void PENF_CLASS::CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
+                                      const ProcessInfo& rCurrentProcessInfo) {
+    mCouplingRecord.Clear();
+    BaseType::CalculateLocalSystem(rLeftHandSideMatrix, rRightHandSideVector, rCurrentProcessInfo);
+}
+
+PENF_TEMPLATE
+void PENF_CLASS::CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) {
+    mCouplingRecord.Clear();
+    BaseType::CalculateLeftHandSide(rLeftHandSideMatrix, rCurrentProcessInfo);
+}
+
+PENF_TEMPLATE
+bool PENF_CLASS::GetNodalGapCoupling(int j, NodalGapCouplingTerms& rTerms) const {
+    return mCouplingRecord.Get(j, rTerms);
 }
 
 PENF_TEMPLATE

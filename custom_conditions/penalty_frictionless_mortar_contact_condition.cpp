@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_conditions/penalty_frictionless_mortar_contact_condition.h"
 
+#include <type_traits>
+
 #include "custom_conditions/frictionless_mortar_contact_common.h"
 
 namespace contact_app {
@@ -8,14 +10,25 @@ namespace {
 
 using namespace frictionless_detail;
 
-/// RHS of kratos_residuals.md §3.4 for one pair, q = [u2 (d·n_m), u1 (d·n_s)]: S_j[δ_j ε_j g̃_j n_j] on the
-/// active nodes, nothing on the inactive ones.
-template <class T, int TDim, int TNS, int TNM, class TState, class TVector>
-void AddPenaltyFrictionlessResidual(const TState& s, const NodalParameters<TNS>& p, TVector& rhs) {
+/// RHS of one pair, q = [u2 (d·n_m), u1 (d·n_s)]: S_j[δ_j ε_j η_j G_j n_j] on the active nodes, nothing on the
+/// inactive ones; G_j is the node's weighted gap over all its pairs (this pair's part varying) and η_j = Σ_c a_c² / A_j²
+/// (held constant; NodalInterfaceMap::PenaltyGap, docs/theory/mortar.md §7 "Nodal penalty"). In the AD pass @p record
+/// keeps b_j = S_j[δ ε n_j] and this pair's ∂(ηG)_j/∂q for the other pairs' tangent blocks (nodal_gap_coupling.h).
+template <class T, int TDim, int TNS, int TNM, class TState, class TVector, class TRecord>
+void AddPenaltyFrictionlessResidual(const TState& s, const NodalParameters<TNS>& p,
+                                    const NodalInterfaceMap<TDim, TNS>& nodal, TVector& rhs, TRecord* record) {
     for (int j = 0; j < TNS; ++j) {
         if (!p.active[j]) continue;
-        const T gap = PairGap<T, TDim>(s, j);
-        SpreadNormalForce<T, TDim, TNS, TNM>(s, j, T(p.dynamic_factor[j] * p.penalty[j] * gap), rhs);
+        const T gap = nodal.PenaltyGap(j, PairGap<T, TDim>(s, j));
+        const double stiffness = p.dynamic_factor[j] * p.penalty[j];
+        SpreadNormalForce<T, TDim, TNS, TNM>(s, j, T(stiffness * gap), rhs);
+        if constexpr (!std::is_same_v<T, double>) {
+            if (record == nullptr) continue;
+            RecordNodalGapCoupling<T, TDim, TNS, TNM>(
+                s, j, Eigen::Matrix<double, TDim, 1>(Values(s.normals.row(j).transpose()) * stiffness), gap, *record);
+        } else {
+            (void)record;
+        }
     }
 }
 
@@ -61,15 +74,37 @@ void PENALTY_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessIn
 }
 
 PENALTY_TEMPLATE
+void PENALTY_CLASS::CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
+                                         const ProcessInfo& rCurrentProcessInfo) {
+    mCouplingRecord.Clear();
+    BaseType::CalculateLocalSystem(rLeftHandSideMatrix, rRightHandSideVector, rCurrentProcessInfo);
+}
+
+PENALTY_TEMPLATE
+void PENALTY_CLASS::CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) {
+    mCouplingRecord.Clear();
+    BaseType::CalculateLeftHandSide(rLeftHandSideMatrix, rCurrentProcessInfo);
+}
+
+PENALTY_TEMPLATE
+bool PENALTY_CLASS::GetNodalGapCoupling(int j, NodalGapCouplingTerms& rTerms) const {
+    return mCouplingRecord.Get(j, rTerms);
+}
+
+PENALTY_TEMPLATE
 void PENALTY_CLASS::AddResidual(const State<double>& state, const ProcessInfo&, LocalVector<double>& rhs) const {
-    AddPenaltyFrictionlessResidual<double, TDim, TNS, TNM>(state, ReadParameters<TNS>(this->GetParentGeometry(), this->Id()),
-                                                           rhs);
+    const Geometry& slave = this->GetParentGeometry();
+    AddPenaltyFrictionlessResidual<double, TDim, TNS, TNM>(state, ReadParameters<TNS>(slave, this->Id()),
+                                                           MakeNodalInterfaceMap<TDim, TNS>(slave, this->NodalShare(), false),
+                                                           rhs, &mCouplingRecord);
 }
 
 PENALTY_TEMPLATE
 void PENALTY_CLASS::AddResidual(const State<ADScalar>& state, const ProcessInfo&, LocalVector<ADScalar>& rhs) const {
+    const Geometry& slave = this->GetParentGeometry();
     AddPenaltyFrictionlessResidual<ADScalar, TDim, TNS, TNM>(
-        state, ReadParameters<TNS>(this->GetParentGeometry(), this->Id()), rhs);
+        state, ReadParameters<TNS>(slave, this->Id()), MakeNodalInterfaceMap<TDim, TNS>(slave, this->NodalShare(), false),
+        rhs, &mCouplingRecord);
 }
 
 template <int TNS, bool TNV>

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_strategies/residual_based_newton_raphson_contact_strategy.h"
 
+#include <algorithm>
+
 #include "contact_app/application.h"
 #include "contact_app/kernel/exceptions.h"
 #include "custom_strategies/mortar_convergence_criteria.h"
+#include "custom_strategies/nodal_penalty_coupling.h"
 #include "custom_utilities/contact_utilities.h"
 #include "custom_utilities/mortar_normals.h"
 
@@ -19,6 +22,13 @@ ResidualBasedNewtonRaphsonContactStrategy::ResidualBasedNewtonRaphsonContactStra
     CONTACT_CHECK(contact_settings.inner_loop_iterations >= 1, InputError,
                   "contact_settings.inner_loop_iterations must be at least 1, got ",
                   contact_settings.inner_loop_iterations);
+    // The penalty pairs of a slave node are coupled through its weighted gap (a builder shared by several strategies
+    // gets it once).
+    const auto& contributors = mBuilder->AssemblyContributors();
+    if (std::none_of(contributors.begin(), contributors.end(), [](const auto& contributor) {
+            return dynamic_cast<const NodalPenaltyCoupling*>(contributor.get()) != nullptr;
+        }))
+        mBuilder->AddAssemblyContributor(std::make_shared<NodalPenaltyCoupling>());
 }
 
 void ResidualBasedNewtonRaphsonContactStrategy::Initialize() {

@@ -78,8 +78,9 @@ std::size_t ComputePenaltyFrictionlessActiveSet(ModelPart& model_part) {
     const ProcessInfo& process_info = model_part.GetProcessInfo();
     std::size_t flips = 0;
     for (Node* node : SlaveNodesToUpdate(model_part)) {
-        // A penalty node is in contact while the pairs push it: the transmitted ε Q < 0 (docs/theory/mortar.md §7).
-        const double augmented_normal = Penalty(*node, process_info) * ContactUtilities::TransmittedWeightedGap(*node);
+        // A penalty node is in contact while its nodal weighted gap penetrates: λ̄ = ε η G < 0 (docs/theory/mortar.md
+        // §7 "Nodal penalty").
+        const double augmented_normal = Penalty(*node, process_info) * ContactUtilities::PenaltyWeightedGap(*node);
         node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, augmented_normal);
         flips += UpdateActive(*node, augmented_normal < 0.0 && Covered(*node));
     }
@@ -177,11 +178,11 @@ std::array<std::size_t, 2> ComputePenaltyFrictionalActiveSet(ModelPart& model_pa
     std::array<std::size_t, 2> flips{0, 0};
     const std::vector<Node*> nodes = SlaveNodesToUpdate(model_part);
     const double largest_bound = LargestFrictionBound(nodes, [&](Node& node) {
-        return Penalty(node, process_info) * ContactUtilities::TransmittedWeightedGap(node);
+        return Penalty(node, process_info) * ContactUtilities::PenaltyWeightedGap(node);
     });
     for (Node* node : nodes) {
         const double penalty = Penalty(*node, process_info);
-        const double transmitted_normal = penalty * ContactUtilities::TransmittedWeightedGap(*node);
+        const double transmitted_normal = penalty * ContactUtilities::PenaltyWeightedGap(*node);
         node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, transmitted_normal);
         const bool active = transmitted_normal < 0.0 && Covered(*node);
         flips[0] += UpdateActive(*node, active);

@@ -43,6 +43,13 @@ double ContactUtilities::TransmittedWeightedGap(const Node& node) {
     return area > 0.0 ? node.GetValue(AREA_WEIGHTED_PAIR_GAP) / area : gap;
 }
 
+double ContactUtilities::PenaltyWeightedGap(const Node& node) {
+    const double area = node.GetValue(NODAL_AREA);
+    const double gap = node.SolutionStepsDataHas(WEIGHTED_GAP) ? node.FastGetSolutionStepValue(WEIGHTED_GAP)
+                                                               : node.GetValue(WEIGHTED_GAP);
+    return area > 0.0 ? gap * node.GetValue(SQUARED_PAIR_AREA) / (area * area) : gap;
+}
+
 Array3 ContactUtilities::TransmittedWeightedSlip(const Node& node) {
     const double area = node.GetValue(NODAL_AREA);
     if (area > 0.0) return node.GetValue(AREA_WEIGHTED_PAIR_SLIP) / area;
@@ -163,6 +170,7 @@ void ContactUtilities::ResetExplicitNodalValues(Node& node) {
     ZeroNodal(node, WEIGHTED_SLIP);
     node.SetValue(NODAL_AREA, 0.0);
     node.SetValue(AREA_WEIGHTED_PAIR_GAP, 0.0);
+    node.SetValue(SQUARED_PAIR_AREA, 0.0);
     node.SetValue(AREA_WEIGHTED_PAIR_SLIP, Array3(Array3::Zero()));
 }
 

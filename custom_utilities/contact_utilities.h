@@ -22,6 +22,10 @@ public:
     /// @brief Q = AREA_WEIGHTED_PAIR_GAP / NODAL_AREA, the weighted gap the pairs' augmentation transmits to a slave
     ///        node (docs/theory/mortar.md §7); WEIGHTED_GAP where the node has no area.
     static double TransmittedWeightedGap(const Node& node);
+    /// @brief η G with G = WEIGHTED_GAP and η = SQUARED_PAIR_AREA / NODAL_AREA² (Σ_c a_c² / A²): the gap the penalty
+    ///        families push a slave node with, λ̄ = ε η G (docs/theory/mortar.md §7 "Nodal penalty"); G where the node
+    ///        has no area.
+    static double PenaltyWeightedGap(const Node& node);
     /// @brief T = AREA_WEIGHTED_PAIR_SLIP / NODAL_AREA, the weighted slip the pairs' penalty stick rows transmit to a
     ///        slave node (docs/theory/mortar.md §7); WEIGHTED_SLIP where the node has no area.
     static Array3 TransmittedWeightedSlip(const Node& node);
@@ -61,7 +65,7 @@ public:
     ///        of @p model_part, then AddExplicitContribution of every condition with the root ProcessInfo.
     static void ComputeExplicitContributionConditions(ModelPart& model_part);
     /// @brief Before the pairs accumulate into @p node: WEIGHTED_GAP, WEIGHTED_SLIP (historical when stored, else
-    ///        non-historical), NODAL_AREA and AREA_WEIGHTED_PAIR_GAP := 0.
+    ///        non-historical), NODAL_AREA, AREA_WEIGHTED_PAIR_GAP and SQUARED_PAIR_AREA := 0.
     static void ResetExplicitNodalValues(Node& node);
     /// @brief Fixes VECTOR_LAGRANGE_MULTIPLIER_c = 0 at the frictional slave nodes (WEIGHTED_SLIP stored) of
     ///        @p computing's pairs that lie on a symmetry plane c = const through the interface: the node is held in

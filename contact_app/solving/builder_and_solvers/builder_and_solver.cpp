@@ -83,6 +83,9 @@ void BuilderAndSolver::ResizeAndInitializeVectors(Scheme& rScheme, SparseMatrixT
         entity.EquationIdVector(ids, info);
         add_block(ids, ids);
     });
+    for (const auto& contributor : mContributors)
+        contributor->AddGraph(rModelPart, info, [&](const EquationIdVectorType& rows, const EquationIdVectorType& cols,
+                                                    const Matrix*) { add_block(rows, cols); });
     (void)rScheme;
     std::size_t nonzeros = 0;
     for (auto& column : columns) {
@@ -139,6 +142,21 @@ void BuilderAndSolver::Build(Scheme& rScheme, ModelPart& rModelPart, SparseMatri
         rScheme.CalculateSystemContributions(entity, lhs, rhs, ids, info);
         Assemble(&rA, &rB, &lhs, &rhs, ids);
     });
+    AssembleContributors(rModelPart, rA);
+}
+
+void BuilderAndSolver::AssembleContributors(ModelPart& rModelPart, SparseMatrixType& rA) {
+    for (const auto& contributor : mContributors)
+        contributor->AddLHS(rModelPart, rModelPart.GetProcessInfo(),
+                            [&](const EquationIdVectorType& rows, const EquationIdVectorType& cols, const Matrix* block) {
+                                for (std::size_t b = 0; b < cols.size(); ++b) {
+                                    if (cols[b] >= mEquationSystemSize) continue;
+                                    for (std::size_t a = 0; a < rows.size(); ++a)
+                                        if (rows[a] < mEquationSystemSize)
+                                            rA.coeffRef(static_cast<Eigen::Index>(rows[a]),
+                                                        static_cast<Eigen::Index>(cols[b])) += (*block)(a, b);
+                                }
+                            });
 }
 
 void BuilderAndSolver::BuildLHS(Scheme& rScheme, ModelPart& rModelPart, SparseMatrixType& rA) {
@@ -150,6 +168,7 @@ void BuilderAndSolver::BuildLHS(Scheme& rScheme, ModelPart& rModelPart, SparseMa
         rScheme.CalculateLHSContribution(entity, lhs, ids, info);
         Assemble(&rA, nullptr, &lhs, nullptr, ids);
     });
+    AssembleContributors(rModelPart, rA);
 }
 
 void BuilderAndSolver::AssembleResidual(Scheme& rScheme, ModelPart& rModelPart, SystemVectorType& rResidual,

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "contact_app/kernel/model_part.h"
+#include "contact_app/solving/builder_and_solvers/assembly_contributor.h"
 #include "contact_app/solving/linear_solvers/linear_solver.h"
 #include "contact_app/solving/schemes/scheme.h"
 #include "contact_app/solving/system_types.h"
@@ -83,6 +84,11 @@ public:
     virtual std::string Info() const = 0;
     const BuilderAndSolverTimings& Timings() const { return mTimings; }
     void ResetTimings() { mTimings = {}; }
+    /// Adds tangent blocks beyond the entities' own (graph and every LHS build); kept until the builder dies.
+    void AddAssemblyContributor(AssemblyContributor::Pointer contributor) {
+        mContributors.push_back(std::move(contributor));
+    }
+    const std::vector<AssemblyContributor::Pointer>& AssemblyContributors() const { return mContributors; }
 
 protected:
     /// Adds a local system into the global one; ids ≥ the system size are skipped.
@@ -99,6 +105,10 @@ protected:
 private:
     bool HasActiveConstraints(const ModelPart& rModelPart) const;
     void BuildRelationMatrix(ModelPart& rModelPart);
+    /// The contributors' LHS blocks into @p rA (ids ≥ the system size skipped).
+    void AssembleContributors(ModelPart& rModelPart, SparseMatrixType& rA);
+
+    std::vector<AssemblyContributor::Pointer> mContributors;
 
     LinearSolver::Pointer mLinearSolver;
     SparseMatrixType mT;           // relation matrix of the last ApplyConstraints

@@ -14,6 +14,7 @@
 #include "contact_app/kernel/registry.h"
 #include "custom_conditions/contact_condition_registration.h"
 #include "custom_conditions/paired_condition.h"
+#include "custom_utilities/mortar_normals.h"
 
 namespace contact_app::testing {
 
@@ -31,6 +32,42 @@ inline const ContactConditionName& DecodedName(const std::string& name) {
 
 inline std::string FaceGeometryName(int dim, int num_nodes) {
     return dim == 2 ? "Line2D2" : (num_nodes == 3 ? "Triangle3D3" : "Quadrilateral3D4");
+}
+
+/// Nodal (rows) and centre unit normals of the slave face from its current coordinates.
+inline void FaceNormals(const Geometry& face, int dim, Eigen::MatrixXd& nodal, Eigen::VectorXd& center) {
+    const int n = static_cast<int>(face.size());
+    Eigen::MatrixXd x(n, dim);
+    for (int i = 0; i < n; ++i) x.row(i) = face[i].Coordinates().head(dim).transpose();
+    if (dim == 2) {
+        const NodeCoordinates<double, 2, 2> c = x;
+        nodal = FaceNodalUnitNormals<2, 2, double>(c);
+        center = FaceCenterUnitNormal<2, 2, double>(c);
+    } else if (n == 3) {
+        const NodeCoordinates<double, 3, 3> c = x;
+        nodal = FaceNodalUnitNormals<3, 3, double>(c);
+        center = FaceCenterUnitNormal<3, 3, double>(c);
+    } else {
+        const NodeCoordinates<double, 3, 4> c = x;
+        nodal = FaceNodalUnitNormals<3, 4, double>(c);
+        center = FaceCenterUnitNormal<3, 4, double>(c);
+    }
+}
+
+/// Sets the slave nodal NORMAL (historical) and the pair NORMAL as the search/criteria would for one face.
+inline void UpdateNormals(PairedCondition& pair, int dim) {
+    Eigen::MatrixXd nodal;
+    Eigen::VectorXd center;
+    FaceNormals(pair.GetParentGeometry(), dim, nodal, center);
+    auto& slave = const_cast<Geometry&>(pair.GetParentGeometry());
+    for (std::size_t i = 0; i < slave.size(); ++i) {
+        Array3 n = Array3::Zero();
+        n.head(dim) = nodal.row(i).transpose();
+        slave[i].FastGetSolutionStepValue(NORMAL) = n;
+    }
+    Array3 c = Array3::Zero();
+    c.head(dim) = center;
+    pair.SetValue(NORMAL, c);
 }
 
 /// A model part with the historical variables and DoFs of the ALM frictionless (scalar and vector multiplier) solvers.

@@ -18,34 +18,6 @@
 namespace contact_app::testing {
 namespace {
 
-/// Sets the slave nodal NORMAL (historical) and the pair NORMAL from the current slave face.
-void UpdateNormals(PairedCondition& pair, int dim) {
-    const Geometry& face = pair.GetParentGeometry();
-    const int n = static_cast<int>(face.size());
-    Eigen::MatrixXd x(n, dim), nodal;
-    Eigen::VectorXd center;
-    for (int i = 0; i < n; ++i) x.row(i) = face[i].Coordinates().head(dim).transpose();
-    if (dim == 2) {
-        nodal = FaceNodalUnitNormals<2, 2, double>(NodeCoordinates<double, 2, 2>(x));
-        center = FaceCenterUnitNormal<2, 2, double>(NodeCoordinates<double, 2, 2>(x));
-    } else if (n == 3) {
-        nodal = FaceNodalUnitNormals<3, 3, double>(NodeCoordinates<double, 3, 3>(x));
-        center = FaceCenterUnitNormal<3, 3, double>(NodeCoordinates<double, 3, 3>(x));
-    } else {
-        nodal = FaceNodalUnitNormals<3, 4, double>(NodeCoordinates<double, 3, 4>(x));
-        center = FaceCenterUnitNormal<3, 4, double>(NodeCoordinates<double, 3, 4>(x));
-    }
-    auto& slave = const_cast<Geometry&>(face);
-    for (int i = 0; i < n; ++i) {
-        Array3 v = Array3::Zero();
-        v.head(dim) = nodal.row(i).transpose();
-        slave[i].FastGetSolutionStepValue(NORMAL) = v;
-    }
-    Array3 c = Array3::Zero();
-    c.head(dim) = center;
-    pair.SetValue(NORMAL, c);
-}
-
 template <class TPair>
 void RandomCoordinates(std::mt19937& rng, bool axisym, Eigen::MatrixXd& slave, Eigen::MatrixXd& master) {
     const auto pair = MakeRandomPair<TPair>(rng, 0.3, !axisym);

@@ -15,42 +15,6 @@
 namespace contact_app::testing {
 namespace {
 
-/// Nodal (rows) and centre unit normals of the slave face from its current coordinates.
-void FaceNormals(const Geometry& face, int dim, Eigen::MatrixXd& nodal, Eigen::VectorXd& center) {
-    const int n = static_cast<int>(face.size());
-    Eigen::MatrixXd x(n, dim);
-    for (int i = 0; i < n; ++i) x.row(i) = face[i].Coordinates().head(dim).transpose();
-    if (dim == 2) {
-        const NodeCoordinates<double, 2, 2> c = x;
-        nodal = FaceNodalUnitNormals<2, 2, double>(c);
-        center = FaceCenterUnitNormal<2, 2, double>(c);
-    } else if (n == 3) {
-        const NodeCoordinates<double, 3, 3> c = x;
-        nodal = FaceNodalUnitNormals<3, 3, double>(c);
-        center = FaceCenterUnitNormal<3, 3, double>(c);
-    } else {
-        const NodeCoordinates<double, 3, 4> c = x;
-        nodal = FaceNodalUnitNormals<3, 4, double>(c);
-        center = FaceCenterUnitNormal<3, 4, double>(c);
-    }
-}
-
-/// Sets the slave nodal NORMAL (historical) and the pair NORMAL as the search/criteria would for one face.
-void UpdateNormals(PairedCondition& pair, int dim) {
-    Eigen::MatrixXd nodal;
-    Eigen::VectorXd center;
-    FaceNormals(pair.GetParentGeometry(), dim, nodal, center);
-    auto& slave = const_cast<Geometry&>(pair.GetParentGeometry());
-    for (std::size_t i = 0; i < slave.size(); ++i) {
-        Array3 n = Array3::Zero();
-        n.head(dim) = nodal.row(i).transpose();
-        slave[i].FastGetSolutionStepValue(NORMAL) = n;
-    }
-    Array3 c = Array3::Zero();
-    c.head(dim) = center;
-    pair.SetValue(NORMAL, c);
-}
-
 template <class TPair>
 void RandomCoordinates(std::mt19937& rng, bool axisym, Eigen::MatrixXd& slave, Eigen::MatrixXd& master) {
     const auto pair = MakeRandomPair<TPair>(rng, 0.3, !axisym);

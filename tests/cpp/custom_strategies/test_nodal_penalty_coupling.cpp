@@ -1,0 +1,195 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// The nodal penalty's global tangent (docs/theory/mortar.md §7 "Nodal penalty"): a slave face against two
+/// non-matching master faces, every slave node shared by both pairs and penetrating by a non-uniform gap. The pairs'
+/// local tangents plus the NodalPenaltyCoupling blocks must equal the central finite differences of the assembled
+/// residual, the nodal sums (WEIGHTED_GAP, NODAL_AREA, ...) recomputed at every perturbed state as the strategy does
+/// and η = Σ_c a_c² / A² held at its value, as the tangent holds it.
+#include <cmath>
+#include <map>
+
+#include "../custom_conditions/contact_condition_test_utilities.h"
+#include "contact_app/solving/schemes/scheme.h"
+#include "custom_strategies/nodal_penalty_coupling.h"
+#include "custom_utilities/contact_utilities.h"
+
+namespace contact_app::testing {
+namespace {
+
+struct CouplingModel {
+    ContactPairModel model;
+    ModelPart* computing = nullptr;
+    std::vector<Condition::Pointer> pairs;
+    std::vector<Dof*> dofs;  // the displacement DoFs, numbered 0..n−1
+    int dim = 2;
+    bool normal_variation = false;
+    std::map<IndexType, double> eta;  // slave node id → η held by the tangent
+};
+
+/// 2D: slave [0, 1] at y = 0 (normal +y) against masters [−0.3, 0.4], [0.4, 1.3] sagging below it (penetration
+/// 0.01 ... 0.02). 3D: slave quad [0, 1]² against two quads split at x = 0.6 with a tilted, penetrating surface.
+void Build(CouplingModel& m, const std::string& family, int dim) {
+    m.dim = dim;
+    m.computing = &m.model.part->CreateSubModelPart("ComputingContact");
+    const std::string name = family + (dim == 2 ? "2D2N" : "3D4N");
+    const auto& row = DecodedName(name);
+    m.normal_variation = row.normal_variation;
+    const auto& prototype = dynamic_cast<const PairedCondition&>(Registry<Condition>::Instance().Get(name));
+    auto geometry = [&](const std::vector<IndexType>& ids) {
+        Geometry::PointsArrayType points;
+        for (IndexType id : ids) points.push_back(m.model.part->pGetNode(id));
+        return CreateGeometry(FaceGeometryName(row.dim, static_cast<int>(ids.size())), points);
+    };
+    Array3 n = Array3::Zero();
+    std::vector<IndexType> slave_ids;
+    if (dim == 2) {
+        m.model.AddNode(1, Eigen::Vector2d(1.0, 0.0));
+        m.model.AddNode(2, Eigen::Vector2d(0.0, 0.0));
+        const double xm[] = {-0.3, 0.4, 1.3}, ym[] = {-0.01, -0.02, -0.012};
+        for (int i = 0; i < 3; ++i) m.model.AddNode(11 + i, Eigen::Vector2d(xm[i], ym[i]));
+        n = Array3(0.0, 1.0, 0.0);
+        auto slave = geometry({1, 2});
+        for (int f = 0; f < 2; ++f)
+            m.pairs.push_back(prototype.Create(f + 1, slave, m.model.properties,
+                                               geometry({IndexType(11 + f), IndexType(12 + f)})));
+        slave_ids = {1, 2};
+    } else {
+        const double xs[][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        for (int i = 0; i < 4; ++i) m.model.AddNode(1 + i, Eigen::Vector3d(xs[i][0], xs[i][1], 0.0));
+        const double xm[] = {-0.2, 0.6, 1.3}, ym[] = {-0.1, 1.1};
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 2; ++j)
+                m.model.AddNode(11 + 2 * i + j, Eigen::Vector3d(xm[i], ym[j], -0.01 - 0.01 * xm[i] * xm[i] + 0.005 * ym[j]));
+        n = Array3(0.0, 0.0, 1.0);
+        auto slave = geometry({1, 2, 3, 4});
+        for (int f = 0; f < 2; ++f) {
+            const IndexType a = 11 + 2 * f;
+            m.pairs.push_back(prototype.Create(f + 1, slave, m.model.properties,
+                                               geometry({a, IndexType(a + 1), IndexType(a + 3), IndexType(a + 2)})));
+        }
+        slave_ids = {1, 2, 3, 4};
+    }
+    for (IndexType id : slave_ids) {
+        Node& node = m.model.part->GetNode(id);
+        node.FastGetSolutionStepValue(NORMAL) = n;
+        node.Set(ACTIVE, true);
+        node.Set(SLAVE, true);
+        node.SetValue(INITIAL_PENALTY, 1.0e3);
+    }
+    ProcessInfo info;
+    for (auto& pair : m.pairs) {
+        pair->SetValue(NORMAL, n);
+        pair->Initialize(info);
+        m.computing->AddCondition(pair);
+    }
+    const Variable<double>* components[] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
+    for (const auto& node : m.model.part->Nodes())
+        for (int c = 0; c < dim; ++c) {
+            Dof* dof = &node->GetDof(*components[c]);
+            dof->SetEquationId(m.dofs.size());
+            m.dofs.push_back(dof);
+        }
+}
+
+/// Sets DOF @p i's displacement to @p value and moves the node with it (a moving mesh).
+void SetDisplacement(Dof* dof, double value) {
+    Node& node = dof->GetNode();
+    dof->GetSolutionStepValue() = value;
+    node.Coordinates() = node.InitialCoordinates() + node.FastGetSolutionStepValue(DISPLACEMENT);
+}
+
+/// The explicit pass (nodal sums) at the current state, as the strategy runs it before each build.
+/// With normal variation the nodal normals follow the slave face (one face: its own nodal normals), as the search
+/// and the criteria set them.
+/// The tangent holds η = SQUARED_PAIR_AREA / NODAL_AREA² constant: the differenced residual keeps the η of the state
+/// the tangent was taken at (m.eta, once set).
+void ExplicitPass(CouplingModel& m) {
+    if (m.normal_variation) UpdateNormals(dynamic_cast<PairedCondition&>(*m.pairs[0]), m.dim);
+    for (auto& pair : m.pairs) pair->SetValue(NORMAL, m.pairs[0]->GetValue(NORMAL));
+    ContactUtilities::ComputeExplicitContributionConditions(*m.computing);
+    for (const auto& [id, eta] : m.eta) {
+        Node& node = m.model.part->GetNode(id);
+        node.SetValue(SQUARED_PAIR_AREA, eta * std::pow(node.GetValue(NODAL_AREA), 2));
+    }
+}
+
+Eigen::VectorXd Residual(CouplingModel& m) {
+    ExplicitPass(m);
+    const ProcessInfo info;
+    Eigen::VectorXd total = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m.dofs.size()));
+    EquationIdVectorType ids;
+    for (auto& pair : m.pairs) {
+        Vector rhs;
+        pair->CalculateRightHandSide(rhs, info);
+        pair->EquationIdVector(ids, info);
+        for (std::size_t a = 0; a < ids.size(); ++a) total[static_cast<Eigen::Index>(ids[a])] += rhs[a];
+    }
+    return total;
+}
+
+/// The assembled LHS: the pairs' local tangents, plus the coupling blocks when @p coupled.
+Eigen::MatrixXd Tangent(CouplingModel& m, bool coupled) {
+    ExplicitPass(m);
+    const ProcessInfo info;
+    const auto n = static_cast<Eigen::Index>(m.dofs.size());
+    Eigen::MatrixXd total = Eigen::MatrixXd::Zero(n, n);
+    EquationIdVectorType ids;
+    for (auto& pair : m.pairs) {
+        Matrix lhs;
+        Vector rhs;
+        pair->CalculateLocalSystem(lhs, rhs, info);
+        pair->EquationIdVector(ids, info);
+        for (std::size_t a = 0; a < ids.size(); ++a)
+            for (std::size_t b = 0; b < ids.size(); ++b) total(ids[a], ids[b]) += lhs(a, b);
+    }
+    if (coupled) {
+        NodalPenaltyCoupling coupling;
+        coupling.AddLHS(*m.model.part, info,
+                        [&](const EquationIdVectorType& rows, const EquationIdVectorType& cols, const Matrix* block) {
+                            for (std::size_t a = 0; a < rows.size(); ++a)
+                                for (std::size_t b = 0; b < cols.size(); ++b) total(rows[a], cols[b]) += (*block)(a, b);
+                        });
+    }
+    return total;
+}
+
+class NodalPenaltyTangent : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(NodalPenaltyTangent, PairsPlusCouplingAreTheDerivativeOfTheAssembledResidual) {
+    for (const int dim : {2, 3}) {
+        SCOPED_TRACE(dim);
+        CouplingModel m;
+        Build(m, GetParam(), dim);
+        // A deformed state off every symmetry.
+        for (std::size_t i = 0; i < m.dofs.size(); ++i) SetDisplacement(m.dofs[i], 1e-3 * std::sin(1.0 + 3.7 * i));
+        const Eigen::MatrixXd lhs = Tangent(m, true);
+        for (const auto& node : m.model.part->Nodes())
+            if (node->Is(SLAVE))
+                m.eta[node->Id()] = node->GetValue(SQUARED_PAIR_AREA) / std::pow(node->GetValue(NODAL_AREA), 2);
+        const Eigen::MatrixXd pairs_only = Tangent(m, false);
+        const double h = 1e-7;
+        Eigen::MatrixXd fd(lhs.rows(), lhs.cols());
+        for (std::size_t i = 0; i < m.dofs.size(); ++i) {
+            const double u = m.dofs[i]->GetSolutionStepValue();
+            SetDisplacement(m.dofs[i], u + h);
+            const Eigen::VectorXd plus = Residual(m);
+            SetDisplacement(m.dofs[i], u - h);
+            const Eigen::VectorXd minus = Residual(m);
+            SetDisplacement(m.dofs[i], u);
+            fd.col(static_cast<Eigen::Index>(i)) = -(plus - minus) / (2.0 * h);
+        }
+        const double scale = fd.cwiseAbs().maxCoeff();
+        EXPECT_LT((lhs - fd).cwiseAbs().maxCoeff(), 1e-6 * scale);
+        // The coupling is what makes it exact: the pairs alone miss the cross-pair blocks.
+        EXPECT_GT((pairs_only - fd).cwiseAbs().maxCoeff(), 1e-2 * scale);
+        // Every slave node is active and penetrating.
+        for (const auto& node : m.model.part->Nodes())
+            if (node->Is(SLAVE)) EXPECT_LT(node->FastGetSolutionStepValue(WEIGHTED_GAP), 0.0);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Families, NodalPenaltyTangent,
+                         ::testing::Values("PenaltyFrictionlessMortarContactCondition",
+                                           "PenaltyNVFrictionlessMortarContactCondition"));
+
+}  // namespace
+}  // namespace contact_app::testing
