@@ -1,13 +1,15 @@
 """Static condensation of the linear bulk on the 3D Hertz example (issue 18 item 2; not a test).
 
-For each refinement level and each ``linear_solver_settings.static_condensation`` value (true,
-false) the example runs in its own process, so the peak resident memory
+For each refinement level the example runs with ``linear_solver_settings.static_condensation``
+true, false, and false with ``solver_type`` "umfpack" (the solver before MUMPS, f9143d7), each in
+its own process, so the peak resident memory
 (``resource.getrusage(...).ru_maxrss``) is that run's. Printed, and written to
 ``build/benchmarks/hertz_static_condensation.json``: equations, interface size, Newton iterations
-per step, total wall time of the analysis, linear-solve wall time (builder timings), the bulk
+per step, the inner solver (the example's own: UMFPACK below 20,000 equations, MUMPS above), total
+wall time of the analysis, linear-solve wall time (builder timings), the bulk
 condensation time and the time per condensed solve, the peak memory, the 1-minute load average
 after the run, and the largest relative differences of the displacements and contact pressures
-between the two runs of a level.
+against the condensation-off run of the level.
 
 Usage: ``python benchmarks/hertz_static_condensation.py [levels ...]`` (default: 2 3).
 """
@@ -28,7 +30,8 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLE = ROOT / "examples" / "hertz_3d"
 OUT = ROOT / "build" / "benchmarks"
-MODES = {"on": True, "off": False}
+#: mode -> (static_condensation, solver_type or None for the example's own)
+MODES = {"on": (True, None), "off": (False, None), "umfpack": (False, "umfpack")}
 
 
 def _measure(level: int, mode: str) -> dict:
@@ -43,7 +46,10 @@ def _measure(level: int, mode: str) -> dict:
     workdir = OUT / f"hertz_3d_condensation_level{level}_{mode}"
     workdir.mkdir(parents=True, exist_ok=True)
     parameters = json.loads((EXAMPLE / "ProjectParameters.json").read_text())
-    parameters["solver_settings"]["linear_solver_settings"]["static_condensation"] = MODES[mode]
+    linear = parameters["solver_settings"]["linear_solver_settings"]
+    linear["static_condensation"], solver_type = MODES[mode]
+    if solver_type is not None:
+        linear["solver_type"] = solver_type
     parameters["output_processes"] = {}
     (workdir / "ProjectParameters.json").write_text(json.dumps(parameters, indent=1))
     (workdir / "materials.json").write_text((EXAMPLE / "materials.json").read_text())
@@ -68,6 +74,9 @@ def _measure(level: int, mode: str) -> dict:
         or int(statistics.get("interface_size", 0)) + int(statistics.get("bulk_size", 0)),
         "interface": int(statistics.get("interface_size", 0)),
         "condensation": statistics.get("condensation", ""),
+        "solver": "condensed"
+        if statistics.get("condensation") == "yes"
+        else statistics.get("solver"),
         "iterations": [step.iterations for step in analysis.reporter.steps],
         "wall_s": total,
         "linear_solve_s": analysis.reporter.linear_solve,
@@ -104,22 +113,22 @@ def main(argv: list[str]) -> int:
                 check=True,
             )
             runs[mode] = json.loads(child.stdout.strip().splitlines()[-1])
-        du, dp = _difference(runs["on"], runs["off"])
         for run in runs.values():
-            run["max_rel_diff_u"], run["max_rel_diff_p"] = du, dp
+            run["max_rel_diff_u"], run["max_rel_diff_p"] = _difference(run, runs["off"])
             rows.append(run)
     header = (
-        f"{'level':>5} {'mode':>4} {'equations':>9} {'n_I':>5} {'iterations':>14} "
+        f"{'level':>5} {'mode':>7} {'solver':>9} {'equations':>9} {'n_I':>5} {'iterations':>14} "
         f"{'wall s':>7} {'solve s':>7} {'bulk s':>6} {'s/solve':>7} {'peak MB':>7} {'load':>5} "
         f"{'du':>8} {'dp':>8}"
     )
     print(header)
     for r in rows:
         print(
-            f"{r['level']:>5} {r['mode']:>4} {r['equations']:>9} {r['interface']:>5} "
-            f"{str(r['iterations']):>14} {r['wall_s']:7.1f} {r['linear_solve_s']:7.1f} "
-            f"{r['bulk_s']:6.1f} {r['per_condensed_solve_s']:7.3f} {r['peak_MB']:7.0f} "
-            f"{r['load']:5.1f} {r['max_rel_diff_u']:8.1e} {r['max_rel_diff_p']:8.1e}"
+            f"{r['level']:>5} {r['mode']:>7} {r['solver']:>9} {r['equations']:>9} "
+            f"{r['interface']:>5} {str(r['iterations']):>14} {r['wall_s']:7.1f} "
+            f"{r['linear_solve_s']:7.1f} {r['bulk_s']:6.1f} {r['per_condensed_solve_s']:7.3f} "
+            f"{r['peak_MB']:7.0f} {r['load']:5.1f} {r['max_rel_diff_u']:8.1e} "
+            f"{r['max_rel_diff_p']:8.1e}"
         )
     (OUT / "hertz_static_condensation.json").write_text(json.dumps(rows, indent=1))
     return 0

@@ -2,6 +2,7 @@
 #include "contact_app/solving/linear_solvers/static_condensation_solver.h"
 
 #include <algorithm>
+#include <numeric>
 #include <chrono>
 #include <cstring>
 #include <unordered_set>
@@ -9,6 +10,7 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/Dense>
 #include <Eigen/UmfPackSupport>
+#include <dmumps_c.h>
 
 #include "contact_app/kernel/dof.h"
 #include "contact_app/kernel/exceptions.h"
@@ -50,6 +52,81 @@ Eigen::Index BlockColumns(Eigen::Index bulk_size) {
     return std::clamp<Eigen::Index>((Eigen::Index{16} << 20) / std::max<Eigen::Index>(bulk_size, 1), 16, 1024);
 }
 
+/// P = A_CB A_BB⁻¹ A_BC as minus the Schur complement of [A_BB A_BC; A_CB 0] on C (MUMPS, ICNTL(19)):
+/// one sparse factorisation with C eliminated last instead of n_C solves with the bulk factor.
+/// False if MUMPS fails (the caller then takes the solves).
+/// @param symmetric A_BB symmetric and A_CB = A_BCᵀ: MUMPS's LDLᵀ on the lower triangles (half the work and memory)
+/// @param bulk_order elimination order of the bulk (CHOLMOD's), or empty for MUMPS's own
+bool SchurProductWithMumps(const SparseMatrixType& a_bb, const SparseMatrixType& a_bc, const SparseMatrixType& a_cb,
+                           bool symmetric, const std::vector<int>& bulk_order, Eigen::MatrixXd& rProduct) {
+    const auto n_b = static_cast<MUMPS_INT>(a_bb.rows()), n_c = static_cast<MUMPS_INT>(a_bc.cols());
+    std::vector<MUMPS_INT> rows, columns;
+    std::vector<double> values;
+    const auto add = [&](const SparseMatrixType& block, MUMPS_INT row_offset, MUMPS_INT column_offset) {
+        for (Eigen::Index j = 0; j < block.outerSize(); ++j)
+            for (SparseMatrixType::InnerIterator entry(block, j); entry; ++entry) {
+                if (symmetric && entry.row() + row_offset < j + column_offset) continue;
+                rows.push_back(static_cast<MUMPS_INT>(entry.row()) + 1 + row_offset);
+                columns.push_back(static_cast<MUMPS_INT>(j) + 1 + column_offset);
+                values.push_back(entry.value());
+            }
+    };
+    add(a_bb, 0, 0);
+    if (!symmetric) add(a_bc, 0, n_b);
+    add(a_cb, n_b, 0);
+    for (MUMPS_INT c = 1; c <= n_c; ++c) {  // the (zero) diagonal of the Schur variables
+        rows.push_back(n_b + c);
+        columns.push_back(n_b + c);
+        values.push_back(0.0);
+    }
+    std::vector<MUMPS_INT> schur_variables(static_cast<std::size_t>(n_c));
+    std::iota(schur_variables.begin(), schur_variables.end(), n_b + 1);
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> schur(n_c, n_c);
+
+    DMUMPS_STRUC_C id{};
+    id.job = -1;  // initialise
+    id.par = 1;
+    id.sym = symmetric ? 1 : 0;  // 1: A_BB positive definite (the Schur variables are not pivots)
+    id.comm_fortran = -987654;   // the sequential library's only communicator
+    dmumps_c(&id);
+    if (id.infog[0] < 0) return false;
+    id.icntl[0] = id.icntl[1] = id.icntl[2] = -1;  // silent
+    id.icntl[3] = 0;
+    id.n = n_b + n_c;
+    id.nnz = static_cast<MUMPS_INT8>(values.size());
+    id.irn = rows.data();
+    id.jcn = columns.data();
+    id.a = values.data();
+    id.size_schur = n_c;
+    id.listvar_schur = schur_variables.data();
+    id.icntl[18] = 1;  // ICNTL(19): the Schur complement centralised, by rows
+    id.schur = schur.data();
+    id.schur_lld = n_c;
+    std::vector<MUMPS_INT> position;
+    if (!bulk_order.empty()) {  // ICNTL(7) = 1: PERM_IN(i) = the position of variable i, C last
+        position.resize(static_cast<std::size_t>(n_b + n_c));
+        for (std::size_t k = 0; k < bulk_order.size(); ++k)
+            position[static_cast<std::size_t>(bulk_order[k])] = static_cast<MUMPS_INT>(k + 1);
+        std::iota(position.begin() + n_b, position.end(), n_b + 1);
+        id.perm_in = position.data();
+        id.icntl[6] = 1;
+    }
+    id.job = 4;  // analysis and factorisation
+    for (int retry = 0; retry < 3; ++retry) {
+        dmumps_c(&id);
+        if (id.infog[0] != -8 && id.infog[0] != -9) break;
+        id.icntl[13] = std::max<MUMPS_INT>(2 * id.icntl[13], 40);  // ICNTL(14): more working space
+    }
+    const bool done = id.infog[0] >= 0;
+    id.job = -2;
+    dmumps_c(&id);
+    if (!done || !schur.allFinite()) return false;
+    // Symmetric: MUMPS fills the lower triangle (by rows) only.
+    rProduct = -schur;
+    if (symmetric) rProduct.triangularView<Eigen::StrictlyUpper>() = rProduct.transpose();
+    return true;
+}
+
 }  // namespace
 
 StaticCondensationMode ParseStaticCondensationMode(const std::string& name) {
@@ -59,6 +136,14 @@ StaticCondensationMode ParseStaticCondensationMode(const std::string& name) {
     CONTACT_THROW(InputError, "unknown ", kModeKey, " \"", name, "\"\n  expected: \"auto\", true or false",
                   "\n  fix: remove the key (\"auto\") or give true / false");
 }
+
+/// CHOLMOD's supernodal Cholesky with its fill-reducing order in view (handed to MUMPS).
+struct BulkCholesky : Eigen::CholmodSupernodalLLT<SparseMatrixType> {
+    std::vector<int> EliminationOrder() const {
+        const auto* perm = static_cast<const int*>(m_cholmodFactor->Perm);
+        return {perm, perm + m_cholmodFactor->n};
+    }
+};
 
 /// The factorised bulk block and the Schur product of one condensation. The interface DoFs the bulk
 /// couples to (C, displacements of interface nodes) are kept by identity, so the condensation
@@ -70,7 +155,7 @@ struct StaticCondensationSolver::Bulk {
     std::vector<std::uint64_t> dof_hashes;  // per bulk DoF: which ones a later change touches
     SparseMatrixType a_bc, a_cb;            // A_BC (n_B × n_C) and A_CB (n_C × n_B)
     SparseMatrixType a_bb;                  // kept for UmfPackLU, which refers to its matrix
-    std::unique_ptr<Eigen::CholmodSupernodalLLT<SparseMatrixType>> cholesky;  // A_BB symmetric positive definite
+    std::unique_ptr<BulkCholesky> cholesky;  // A_BB symmetric positive definite
     std::unique_ptr<Eigen::UmfPackLU<SparseMatrixType>> lu;                  // otherwise
     Eigen::MatrixXd schur_product;          // P = A_CB A_BB⁻¹ A_BC, n_C × n_C
 
@@ -190,6 +275,16 @@ void StaticCondensationSolver::Condense(const SparseMatrixType& rA, std::uint64_
     const auto start = std::chrono::steady_clock::now();
     mBulk.reset();  // the old factor's memory first
     auto bulk = std::make_unique<Bulk>();
+    FactoriseBulk(ExtractBlocks(rA, *bulk), *bulk);
+    bulk->bulk_key = mBulkKey;
+    bulk->hash = hash;
+    bulk->dof_hashes = std::move(dof_hashes);
+    mBulk = std::move(bulk);
+    ++mStatistics.bulk_factorizations;
+    mStatistics.bulk_seconds += SecondsSince(start);
+}
+
+SparseMatrixType StaticCondensationSolver::ExtractBlocks(const SparseMatrixType& rA, Bulk& rBulk) const {
     const auto n = static_cast<std::size_t>(rA.rows());
     // C: the interface equations with an entry in a bulk row or column.
     std::vector<int> coupled_index(n, -1);
@@ -201,10 +296,10 @@ void StaticCondensationSolver::Condense(const SparseMatrixType& rA, std::uint64_
         }
     for (std::size_t k = 0; k < n; ++k)
         if (coupled_index[k] == 0) {
-            coupled_index[k] = static_cast<int>(bulk->coupled.size());
-            bulk->coupled.push_back(mDofOfEquation[k]);
+            coupled_index[k] = static_cast<int>(rBulk.coupled.size());
+            rBulk.coupled.push_back(mDofOfEquation[k]);
         }
-    const auto n_c = static_cast<Eigen::Index>(bulk->coupled.size());
+    const auto n_c = static_cast<Eigen::Index>(rBulk.coupled.size());
     const auto n_b = static_cast<Eigen::Index>(mBulkKey.size());
     // The three blocks, column by column; rows arrive sorted because each set keeps the equation order.
     Eigen::VectorXi bb_sizes = Eigen::VectorXi::Zero(n_b), cb_sizes = Eigen::VectorXi::Zero(n_b),
@@ -219,24 +314,28 @@ void StaticCondensationSolver::Condense(const SparseMatrixType& rA, std::uint64_
     }
     SparseMatrixType a_bb(n_b, n_b);
     a_bb.reserve(bb_sizes);
-    bulk->a_cb.resize(n_c, n_b);
-    bulk->a_cb.reserve(cb_sizes);
-    bulk->a_bc.resize(n_b, n_c);
-    bulk->a_bc.reserve(bc_sizes);
+    rBulk.a_cb.resize(n_c, n_b);
+    rBulk.a_cb.reserve(cb_sizes);
+    rBulk.a_bc.resize(n_b, n_c);
+    rBulk.a_bc.reserve(bc_sizes);
     for (Eigen::Index j = 0; j < rA.outerSize(); ++j) {
         const auto column = static_cast<std::size_t>(j);
         for (SparseMatrixType::InnerIterator entry(rA, j); entry; ++entry) {
             const auto i = static_cast<std::size_t>(entry.row());
             if ((mIsInterface[column] && mIsInterface[i]) || entry.value() == 0.0) continue;
-            if (mIsInterface[column]) bulk->a_bc.insert(mLocal[i], coupled_index[column]) = entry.value();
-            else if (mIsInterface[i]) bulk->a_cb.insert(coupled_index[i], mLocal[column]) = entry.value();
+            if (mIsInterface[column]) rBulk.a_bc.insert(mLocal[i], coupled_index[column]) = entry.value();
+            else if (mIsInterface[i]) rBulk.a_cb.insert(coupled_index[i], mLocal[column]) = entry.value();
             else a_bb.insert(mLocal[i], mLocal[column]) = entry.value();
         }
     }
     a_bb.makeCompressed();
-    bulk->a_cb.makeCompressed();
-    bulk->a_bc.makeCompressed();
+    rBulk.a_cb.makeCompressed();
+    rBulk.a_bc.makeCompressed();
+    return a_bb;
+}
 
+void StaticCondensationSolver::FactoriseBulk(SparseMatrixType a_bb, Bulk& rBulk) const {
+    const Eigen::Index n_b = a_bb.rows(), n_c = rBulk.a_bc.cols();
     // CHOLMOD reads one triangle: take it only when A_BB is symmetric to round-off of the element matrices.
     const bool symmetric = [&] {
         const SparseMatrixType asymmetry = a_bb - SparseMatrixType(a_bb.transpose());
@@ -244,37 +343,38 @@ void StaticCondensationSolver::Condense(const SparseMatrixType& rA, std::uint64_
         return (asymmetry.nonZeros() ? asymmetry.coeffs().cwiseAbs().maxCoeff() : 0.0) <= 1e-14 * scale;
     }();
     if (symmetric) {
-        bulk->cholesky = std::make_unique<Eigen::CholmodSupernodalLLT<SparseMatrixType>>();
-        bulk->cholesky->compute(a_bb);
-        if (bulk->cholesky->info() != Eigen::Success) bulk->cholesky.reset();
+        rBulk.cholesky = std::make_unique<BulkCholesky>();
+        rBulk.cholesky->compute(a_bb);
+        if (rBulk.cholesky->info() != Eigen::Success) rBulk.cholesky.reset();
     }
-    if (!bulk->cholesky) {
-        bulk->a_bb = std::move(a_bb);
-        bulk->lu = std::make_unique<Eigen::UmfPackLU<SparseMatrixType>>();
-        bulk->lu->compute(bulk->a_bb);
-        CONTACT_CHECK(bulk->lu->info() == Eigen::Success, ConvergenceError, Info(), ": the ", n_b, "x", n_b,
+    // P from MUMPS's Schur complement (symmetric, in CHOLMOD's order, when the bulk is SPD).
+    const SparseMatrixType bc_transposed = rBulk.a_bc.transpose();
+    const bool symmetric_coupling = rBulk.cholesky && (bc_transposed - rBulk.a_cb).norm() <= 1e-14 * rBulk.a_cb.norm();
+    const bool have_product =
+        SchurProductWithMumps(a_bb, rBulk.a_bc, rBulk.a_cb, symmetric_coupling,
+                              symmetric_coupling ? rBulk.cholesky->EliminationOrder() : std::vector<int>{},
+                              rBulk.schur_product);
+    if (!rBulk.cholesky) {
+        rBulk.a_bb = std::move(a_bb);
+        rBulk.lu = std::make_unique<Eigen::UmfPackLU<SparseMatrixType>>();
+        rBulk.lu->compute(rBulk.a_bb);
+        CONTACT_CHECK(rBulk.lu->info() == Eigen::Success, ConvergenceError, Info(), ": the ", n_b, "x", n_b,
                       " bulk block (every equation off the contact interface) is singular",
                       "\n  fix: check the boundary conditions (a body held only through contact has rigid-body "
                       "modes), or set ", kModeKey, " to false");
     }
 
-    // P in blocks of columns of A_BC (dense right-hand sides of the bulk factor).
-    bulk->schur_product.resize(n_c, n_c);
+    // Without MUMPS's product: P in blocks of columns of A_BC (dense right-hand sides of the bulk factor).
+    if (!have_product) rBulk.schur_product.resize(n_c, n_c);
     const Eigen::Index block = BlockColumns(n_b);
-    for (Eigen::Index first = 0; first < n_c; first += block) {
+    for (Eigen::Index first = 0; !have_product && first < n_c; first += block) {
         const Eigen::Index width = std::min(block, n_c - first);
-        const Eigen::MatrixXd rhs = Eigen::MatrixXd(bulk->a_bc.middleCols(first, width));
-        bulk->schur_product.middleCols(first, width) = bulk->a_cb * bulk->SolveBulk(rhs);
+        const Eigen::MatrixXd rhs = Eigen::MatrixXd(rBulk.a_bc.middleCols(first, width));
+        rBulk.schur_product.middleCols(first, width) = rBulk.a_cb * rBulk.SolveBulk(rhs);
     }
-    CONTACT_CHECK(bulk->schur_product.allFinite(), ConvergenceError, Info(),
+    CONTACT_CHECK(rBulk.schur_product.allFinite(), ConvergenceError, Info(),
                   ": the Schur complement of the bulk has non-finite values (the bulk block is numerically singular)",
                   "\n  fix: check the boundary conditions, or set ", kModeKey, " to false");
-    bulk->bulk_key = mBulkKey;
-    bulk->hash = hash;
-    bulk->dof_hashes = std::move(dof_hashes);
-    mBulk = std::move(bulk);
-    ++mStatistics.bulk_factorizations;
-    mStatistics.bulk_seconds += SecondsSince(start);
 }
 
 void StaticCondensationSolver::SolveCondensed(const SparseMatrixType& rA, SystemVectorType& rX,
