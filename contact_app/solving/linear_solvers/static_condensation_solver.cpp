@@ -189,6 +189,10 @@ LinearSolverStatistics StaticCondensationSolver::Statistics() const {
     statistics.condensed_solves = mStatistics.condensed_solves;
     statistics.bulk_seconds = mStatistics.bulk_seconds;
     statistics.interface_seconds = mStatistics.interface_seconds;
+    // Every solve condensed: the inner solver never ran, so name what did.
+    if (statistics.factorizations == 0 && mBulk)
+        statistics.solver = std::string("static condensation (bulk ") + (mBulk->cholesky ? "cholmod" : "umfpack") +
+                            ", interface dense LU)";
     return statistics;
 }
 
