@@ -93,7 +93,7 @@ NodalInterfaceMap<TDim, TNumNodes> MakeNodalInterfaceMap(const Geometry& slave,
         map.weight[j] = share.area[j] / total_area;
         map.gap_offset[j] = ContactUtilities::TransmittedWeightedGap(node) - share.gap[j];
         map.nodal_gap_offset[j] = node.FastGetSolutionStepValue(WEIGHTED_GAP) - share.gap[j];
-        map.penalty_share[j] = node.GetValue(SQUARED_PAIR_AREA) / (total_area * total_area);
+        map.penalty_share[j] = ContactUtilities::PenaltyShare(node);
         if (frictional) {
             map.slip_offset.row(j) = node.FastGetSolutionStepValue(WEIGHTED_SLIP).template head<TDim>().transpose() -
                                      share.slip.row(j) / map.weight[j];

@@ -149,25 +149,7 @@ void PENF_CLASS::AddFrictionalResidual(const State<T>& state, const ProcessInfo&
     const auto slip = MakeSlipData<TDim, TNS, TNM>(*this, mPreviousMortarOperators, AnyActive(p));
     AddPenaltyFrictionalResidual<T, TDim, TNS, TNM>(state, p, slip,
                                                     MakeNodalInterfaceMap<TDim, TNS>(slave, this->NodalShare(), true),
-                                                    ElasticSlips<TDim, TNS>(slave), rhs, &mCouplingRecord);
-}
-
-PENF_TEMPLATE
-void PENF_CLASS::CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
-                                      const ProcessInfo& rCurrentProcessInfo) {
-    mCouplingRecord.Clear();
-    BaseType::CalculateLocalSystem(rLeftHandSideMatrix, rRightHandSideVector, rCurrentProcessInfo);
-}
-
-PENF_TEMPLATE
-void PENF_CLASS::CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) {
-    mCouplingRecord.Clear();
-    BaseType::CalculateLeftHandSide(rLeftHandSideMatrix, rCurrentProcessInfo);
-}
-
-PENF_TEMPLATE
-bool PENF_CLASS::GetNodalGapCoupling(int j, NodalGapCouplingTerms& rTerms) const {
-    return mCouplingRecord.Get(j, rTerms);
+                                                    ElasticSlips<TDim, TNS>(slave), rhs, this->MutableCouplingRecord());
 }
 
 PENF_TEMPLATE

@@ -2,13 +2,12 @@
 #pragma once
 
 #include "custom_conditions/frictional_mortar_contact_common.h"
-#include "custom_conditions/mortar_contact_condition.h"
-#include "custom_conditions/nodal_gap_coupling.h"
+#include "custom_conditions/penalty_mortar_contact_condition.h"
 
 namespace contact_app {
 
-/// Penalty frictional (Coulomb) mortar contact, displacement DoFs only (docs/theory/contact_residuals.md §7). With the nodal
-/// penalty pressure λ̄_j = ε_j η_j G_j (G_j = Σ_c g̃^c_j over the node's pairs, η_j = Σ_c a_c² / A_j²; the reference
+/// Penalty frictional (Coulomb) mortar contact, displacement DoFs only (docs/theory/contact_residuals.md §7). With the
+/// nodal penalty pressure λ̄_j = ε_j η_j G_j (G_j = Σ_c g̃^c_j over the node's pairs, η_j = Σ_c a_c² / A_j²; the reference
 /// pushes each pair with its own ε g̃^c: docs/theory/mortar.md §7 "Nodal penalty"), an active node adds
 /// S_j[δ_j(λ̄_j n_j + τ_j)], τ_j = −μ_j λ̄_j t_j (SLIP) or
 /// κ ε_j s_j (stick), s_j the objective or non-objective slip of the step (switch on OPERATOR_THRESHOLD recorded
@@ -19,12 +18,11 @@ namespace contact_app {
 /// Registers Penalty[NV]FrictionalMortarContactCondition{2D2N,3D3N,3D4N,3D3N4N,3D4N3N}; size d(n_s + n_m).
 template <int TDim, int TNumNodes, bool TNormalVariation, int TNumNodesMaster = TNumNodes>
 class PenaltyMethodFrictionalMortarContactCondition
-    : public MortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONAL_PENALTY, TNormalVariation,
-                                    TNumNodesMaster>,
-      public NodalGapCouplingSource {
+    : public PenaltyMortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONAL_PENALTY, TNormalVariation,
+                                           TNumNodesMaster> {
 public:
-    using BaseType =
-        MortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONAL_PENALTY, TNormalVariation, TNumNodesMaster>;
+    using BaseType = PenaltyMortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONAL_PENALTY,
+                                                   TNormalVariation, TNumNodesMaster>;
     using typename BaseType::ADScalar;
     template <class T>
     using State = typename BaseType::template State<T>;
@@ -53,10 +51,6 @@ public:
     /// Paired-condition state plus the previous operators and their flags (restart with a consistent slip).
     void Save(Serializer& rSerializer) const override;
     void Load(Serializer& rSerializer) override;
-    void CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
-                              const ProcessInfo& rCurrentProcessInfo) override;
-    void CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) override;
-    bool GetNodalGapCoupling(int j, NodalGapCouplingTerms& rTerms) const override;
 
 protected:
     void InitializeResidual(const MortarOperators<double, TNumNodes, TNumNodesMaster>& operators,
@@ -72,8 +66,6 @@ private:
                                LocalVector<T>& rhs) const;
 
     frictional_detail::PreviousMortarOperators<TNumNodes, TNumNodesMaster> mPreviousMortarOperators;
-    /// Filled by the AD pass of the last tangent evaluation (const AddResidual, hence mutable).
-    mutable NodalGapCouplingRecord<TNumNodes, BaseType::MatrixSize> mCouplingRecord;
 };
 
 /// Axisymmetric variant (2D2N only): every Gauss weight (current and start-of-step operators, explicit gap and

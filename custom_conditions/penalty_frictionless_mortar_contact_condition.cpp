@@ -74,37 +74,19 @@ void PENALTY_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessIn
 }
 
 PENALTY_TEMPLATE
-void PENALTY_CLASS::CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
-                                         const ProcessInfo& rCurrentProcessInfo) {
-    mCouplingRecord.Clear();
-    BaseType::CalculateLocalSystem(rLeftHandSideMatrix, rRightHandSideVector, rCurrentProcessInfo);
-}
-
-PENALTY_TEMPLATE
-void PENALTY_CLASS::CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) {
-    mCouplingRecord.Clear();
-    BaseType::CalculateLeftHandSide(rLeftHandSideMatrix, rCurrentProcessInfo);
-}
-
-PENALTY_TEMPLATE
-bool PENALTY_CLASS::GetNodalGapCoupling(int j, NodalGapCouplingTerms& rTerms) const {
-    return mCouplingRecord.Get(j, rTerms);
-}
-
-PENALTY_TEMPLATE
 void PENALTY_CLASS::AddResidual(const State<double>& state, const ProcessInfo&, LocalVector<double>& rhs) const {
     const Geometry& slave = this->GetParentGeometry();
-    AddPenaltyFrictionlessResidual<double, TDim, TNS, TNM>(state, ReadParameters<TNS>(slave, this->Id()),
-                                                           MakeNodalInterfaceMap<TDim, TNS>(slave, this->NodalShare(), false),
-                                                           rhs, &mCouplingRecord);
+    const auto nodal = MakeNodalInterfaceMap<TDim, TNS>(slave, this->NodalShare(), false);
+    AddPenaltyFrictionlessResidual<double, TDim, TNS, TNM>(state, ReadParameters<TNS>(slave, this->Id()), nodal, rhs,
+                                                           this->MutableCouplingRecord());
 }
 
 PENALTY_TEMPLATE
 void PENALTY_CLASS::AddResidual(const State<ADScalar>& state, const ProcessInfo&, LocalVector<ADScalar>& rhs) const {
     const Geometry& slave = this->GetParentGeometry();
-    AddPenaltyFrictionlessResidual<ADScalar, TDim, TNS, TNM>(
-        state, ReadParameters<TNS>(slave, this->Id()), MakeNodalInterfaceMap<TDim, TNS>(slave, this->NodalShare(), false),
-        rhs, &mCouplingRecord);
+    const auto nodal = MakeNodalInterfaceMap<TDim, TNS>(slave, this->NodalShare(), false);
+    AddPenaltyFrictionlessResidual<ADScalar, TDim, TNS, TNM>(state, ReadParameters<TNS>(slave, this->Id()), nodal, rhs,
+                                                             this->MutableCouplingRecord());
 }
 
 template <int TNS, bool TNV>

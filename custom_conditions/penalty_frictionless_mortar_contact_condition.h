@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
-#include "custom_conditions/mortar_contact_condition.h"
-#include "custom_conditions/nodal_gap_coupling.h"
+#include "custom_conditions/penalty_mortar_contact_condition.h"
 
 namespace contact_app {
 
@@ -13,17 +12,16 @@ namespace contact_app {
 /// and columns stay zero). On a uniform gap this is the reference's pair-wise ε g̃^c; unlike it, the partial gaps
 /// of a node's pairs (of either sign on a curved non-matching face) do not push and pull it separately
 /// (docs/theory/mortar.md §7 "Nodal penalty"). The blocks coupling two pairs of a node are added by
-/// NodalPenaltyCoupling from GetNodalGapCoupling. ε_j = INITIAL_PENALTY and δ_j = DYNAMIC_FACTOR (nodal, non-historical; δ = 1 when
-/// the node has none). LHS = −∂RHS/∂q by AD. Registers Penalty[NV]FrictionlessMortarContactCondition
+/// NodalPenaltyCoupling from GetNodalGapCoupling. ε_j = INITIAL_PENALTY and δ_j = DYNAMIC_FACTOR (nodal,
+/// non-historical; δ = 1 when the node has none). LHS = −∂RHS/∂q by AD. Registers Penalty[NV]FrictionlessMortarContactCondition
 /// {2D2N,3D3N,3D4N,3D3N4N,3D4N3N}; local system [master u, slave u] of size d(n_s + n_m).
 template <int TDim, int TNumNodes, bool TNormalVariation, int TNumNodesMaster = TNumNodes>
 class PenaltyMethodFrictionlessMortarContactCondition
-    : public MortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONLESS_PENALTY, TNormalVariation,
-                                    TNumNodesMaster>,
-      public NodalGapCouplingSource {
+    : public PenaltyMortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONLESS_PENALTY, TNormalVariation,
+                                           TNumNodesMaster> {
 public:
-    using BaseType = MortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONLESS_PENALTY, TNormalVariation,
-                                            TNumNodesMaster>;
+    using BaseType = PenaltyMortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONLESS_PENALTY,
+                                                   TNormalVariation, TNumNodesMaster>;
     using typename BaseType::ADScalar;
     template <class T>
     using State = typename BaseType::template State<T>;
@@ -45,20 +43,12 @@ public:
     /// explicit contribution hard-codes the plane case, the axisymmetric variant weights both by 2π r / t, as its
     /// implicit operators (docs/theory/contact_residuals.md §9).
     void AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) override;
-    void CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
-                              const ProcessInfo& rCurrentProcessInfo) override;
-    void CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) override;
-    bool GetNodalGapCoupling(int j, NodalGapCouplingTerms& rTerms) const override;
 
 protected:
     void AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
                      LocalVector<double>& rhs) const override;
     void AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
                      LocalVector<ADScalar>& rhs) const override;
-
-private:
-    /// Filled by the AD pass of the last tangent evaluation (const AddResidual, hence mutable).
-    mutable NodalGapCouplingRecord<TNumNodes, BaseType::MatrixSize> mCouplingRecord;
 };
 
 /// Axisymmetric variant (2D2N only): every Gauss weight times 2π r / THICKNESS, r = x-coordinate of the

@@ -43,11 +43,15 @@ double ContactUtilities::TransmittedWeightedGap(const Node& node) {
     return area > 0.0 ? node.GetValue(AREA_WEIGHTED_PAIR_GAP) / area : gap;
 }
 
-double ContactUtilities::PenaltyWeightedGap(const Node& node) {
+double ContactUtilities::PenaltyShare(const Node& node) {
     const double area = node.GetValue(NODAL_AREA);
+    return area > 0.0 ? node.GetValue(SQUARED_PAIR_AREA) / (area * area) : 1.0;
+}
+
+double ContactUtilities::PenaltyWeightedGap(const Node& node) {
     const double gap = node.SolutionStepsDataHas(WEIGHTED_GAP) ? node.FastGetSolutionStepValue(WEIGHTED_GAP)
                                                                : node.GetValue(WEIGHTED_GAP);
-    return area > 0.0 ? gap * node.GetValue(SQUARED_PAIR_AREA) / (area * area) : gap;
+    return PenaltyShare(node) * gap;
 }
 
 Array3 ContactUtilities::TransmittedWeightedSlip(const Node& node) {

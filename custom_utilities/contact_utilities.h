@@ -26,6 +26,9 @@ public:
     ///        families push a slave node with, λ̄ = ε η G (docs/theory/mortar.md §7 "Nodal penalty"); G where the node
     ///        has no area.
     static double PenaltyWeightedGap(const Node& node);
+    /// @brief η = SQUARED_PAIR_AREA / NODAL_AREA² = Σ_c a_c² / A², the share of the nodal weighted gap a penalty node is
+    ///        pushed with (1 where the node has no area).
+    static double PenaltyShare(const Node& node);
     /// @brief T = AREA_WEIGHTED_PAIR_SLIP / NODAL_AREA, the weighted slip the pairs' penalty stick rows transmit to a
     ///        slave node (docs/theory/mortar.md §7); WEIGHTED_SLIP where the node has no area.
     static Array3 TransmittedWeightedSlip(const Node& node);

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include "custom_conditions/mortar_contact_condition.h"
+#include "custom_conditions/nodal_gap_coupling.h"
+
+namespace contact_app {
+
+/// What the two penalty families share beyond MortarContactCondition: the record of their nodal-gap coupling terms
+/// (nodal_gap_coupling.h, docs/theory/mortar.md §7 "Nodal penalty"). Every tangent evaluation starts it afresh, the
+/// family residual's AD pass fills it, and NodalPenaltyCoupling reads it after the builder assembled the pairs.
+template <int TDim, int TNumNodes, FrictionalCase TFrictional, bool TNormalVariation, int TNumNodesMaster>
+class PenaltyMortarContactCondition
+    : public MortarContactCondition<TDim, TNumNodes, TFrictional, TNormalVariation, TNumNodesMaster>,
+      public NodalGapCouplingSource {
+public:
+    using BaseType = MortarContactCondition<TDim, TNumNodes, TFrictional, TNormalVariation, TNumNodesMaster>;
+    using BaseType::BaseType;
+
+    void CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
+                              const ProcessInfo& rCurrentProcessInfo) override {
+        mCouplingRecord.Clear();
+        BaseType::CalculateLocalSystem(rLeftHandSideMatrix, rRightHandSideVector, rCurrentProcessInfo);
+    }
+    void CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) override {
+        mCouplingRecord.Clear();
+        BaseType::CalculateLeftHandSide(rLeftHandSideMatrix, rCurrentProcessInfo);
+    }
+    bool GetNodalGapCoupling(int j, NodalGapCouplingTerms& rTerms) const override {
+        return mCouplingRecord.Get(j, rTerms);
+    }
+
+protected:
+    using CouplingRecord = NodalGapCouplingRecord<TNumNodes, BaseType::MatrixSize>;
+    /// Written by the family's (const) AD residual.
+    CouplingRecord* MutableCouplingRecord() const { return &mCouplingRecord; }
+
+private:
+    mutable CouplingRecord mCouplingRecord;
+};
+
+}  // namespace contact_app
