@@ -90,6 +90,8 @@ void ResidualBasedNewtonRaphsonMPCContactStrategy::RefreshConstraints() {
         it->first->FastGetSolutionStepValue(DISPLACEMENT, 1) = it->second;
 }
 
+void ResidualBasedNewtonRaphsonMPCContactStrategy::PredictUnknowns() { mScheme->PredictPrescribed(mModelPart); }
+
 void ResidualBasedNewtonRaphsonMPCContactStrategy::Predict() {
     NewtonRaphsonStrategy::Predict();
     // Gaps of the predicted configuration: the first criterion check compares with them.

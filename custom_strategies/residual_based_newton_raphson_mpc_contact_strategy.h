@@ -26,7 +26,9 @@ struct MPCContactStrategySettings {
 /// (And(structural, MPCContactCriteria)) switches pairs and constraints on and off.
 /// - InitializeSolutionStep: nodal weights NODAL_PAUX (number of SLAVE conditions of "Contact" holding the node),
 ///   then the base (the pairs rebuild their constraints from the start-of-step state).
-/// - Predict: the base prediction (which imposes u_s = T u_m + c), then the weighted gaps at the predicted state.
+/// - Predict: the base prediction (which imposes u_s = T u_m + c) of what the step prescribes only (the scheme's
+///   PredictPrescribed, as the mortar contact strategy: no extrapolation through the contact surface in dynamics),
+///   then the weighted gaps at the predicted state.
 /// - Each Newton iteration: weights, InitializeNonLinIteration, the constraints rebuilt at the current state if
 ///   update_each_nl_iteration or if the last criterion check changed the active set (an inactive slave node loses
 ///   its rows; the reference waits for the next step), u_s := T u_m + c on the active constraints (a rebuilt or
@@ -54,6 +56,9 @@ public:
     /// Outer loops used by the last step (1 without INTERACTION on the ProcessInfo).
     int GetInnerLoopIterations() const { return mInnerLoops; }
     const MPCContactStrategySettings& MPCSettings() const { return mMPCSettings; }
+
+protected:
+    void PredictUnknowns() override;
 
 private:
     /// One Newton loop as described above. @return the criterion's verdict.
