@@ -3,7 +3,8 @@
 /// non-matching master faces, every slave node shared by both pairs and penetrating by a non-uniform gap. The pairs'
 /// local tangents plus the NodalPenaltyCoupling blocks must equal the central finite differences of the assembled
 /// residual, the nodal sums (WEIGHTED_GAP, NODAL_AREA, ...) recomputed at every perturbed state as the strategy does
-/// and η = Σ_c a_c² / A² held at its value, as the tangent holds it.
+/// and η = Σ_c a_c² / A² held at its value, as the tangent holds it. Frictional families: every node sticks (the slip
+/// direction of a slipping node reads the transmitted slip, whose other-pair shares the tangent does not hold yet).
 #include <cmath>
 #include <map>
 
@@ -23,6 +24,7 @@ struct CouplingModel {
     int dim = 2;
     bool normal_variation = false;
     std::map<IndexType, double> eta;  // slave node id → η held by the tangent
+    ProcessInfo info;
 };
 
 /// 2D: slave [0, 1] at y = 0 (normal +y) against masters [−0.3, 0.4], [0.4, 1.3] sagging below it (penetration
@@ -32,6 +34,12 @@ void Build(CouplingModel& m, const std::string& family, int dim) {
     m.computing = &m.model.part->CreateSubModelPart("ComputingContact");
     const std::string name = family + (dim == 2 ? "2D2N" : "3D4N");
     const auto& row = DecodedName(name);
+    const bool frictional = row.family == "PenaltyFrictional";
+    if (frictional) {  // sticking nodes: the slip of the step from the undeformed start, κ ε s per pair
+        m.model.part->AddNodalSolutionStepVariable(WEIGHTED_SLIP);
+        m.model.part->SetBufferSize(2);
+        m.info.SetValue(TANGENT_FACTOR, 0.4);
+    }
     m.normal_variation = row.normal_variation;
     const auto& prototype = dynamic_cast<const PairedCondition&>(Registry<Condition>::Instance().Get(name));
     auto geometry = [&](const std::vector<IndexType>& ids) {
@@ -74,11 +82,14 @@ void Build(CouplingModel& m, const std::string& family, int dim) {
         node.Set(ACTIVE, true);
         node.Set(SLAVE, true);
         node.SetValue(INITIAL_PENALTY, 1.0e3);
+        node.SetValue(FRICTION_COEFFICIENT, 0.3);
+        node.SetValue(TANGENT_XI, Array3(1.0, 0.0, 0.0));
+        node.Set(SLIP, false);
     }
-    ProcessInfo info;
     for (auto& pair : m.pairs) {
         pair->SetValue(NORMAL, n);
-        pair->Initialize(info);
+        pair->Initialize(m.info);
+        if (frictional) pair->InitializeSolutionStep(m.info);
         m.computing->AddCondition(pair);
     }
     const Variable<double>* components[] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
@@ -114,7 +125,7 @@ void ExplicitPass(CouplingModel& m) {
 
 Eigen::VectorXd Residual(CouplingModel& m) {
     ExplicitPass(m);
-    const ProcessInfo info;
+    const ProcessInfo& info = m.info;
     Eigen::VectorXd total = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m.dofs.size()));
     EquationIdVectorType ids;
     for (auto& pair : m.pairs) {
@@ -129,7 +140,7 @@ Eigen::VectorXd Residual(CouplingModel& m) {
 /// The assembled LHS: the pairs' local tangents, plus the coupling blocks when @p coupled.
 Eigen::MatrixXd Tangent(CouplingModel& m, bool coupled) {
     ExplicitPass(m);
-    const ProcessInfo info;
+    const ProcessInfo& info = m.info;
     const auto n = static_cast<Eigen::Index>(m.dofs.size());
     Eigen::MatrixXd total = Eigen::MatrixXd::Zero(n, n);
     EquationIdVectorType ids;
@@ -189,7 +200,9 @@ TEST_P(NodalPenaltyTangent, PairsPlusCouplingAreTheDerivativeOfTheAssembledResid
 
 INSTANTIATE_TEST_SUITE_P(Families, NodalPenaltyTangent,
                          ::testing::Values("PenaltyFrictionlessMortarContactCondition",
-                                           "PenaltyNVFrictionlessMortarContactCondition"));
+                                           "PenaltyNVFrictionlessMortarContactCondition",
+                                           "PenaltyFrictionalMortarContactCondition",
+                                           "PenaltyNVFrictionalMortarContactCondition"));
 
 }  // namespace
 }  // namespace contact_app::testing
