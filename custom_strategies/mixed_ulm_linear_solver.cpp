@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_strategies/mixed_ulm_linear_solver.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -37,8 +38,14 @@ std::string MixedULMLinearSolver::Info() const {
     return "mixed_ulm_linear_solver(" + mInner->Info() + ")";
 }
 
-void MixedULMLinearSolver::ProvideAdditionalData(const std::vector<Dof*>& rDofSet, ModelPart&) {
+void MixedULMLinearSolver::ProvideAdditionalData(const std::vector<Dof*>& rDofSet, ModelPart& rModelPart) {
     mPairs.clear();
+    mScalarCandidates.clear();
+    if (mInner->UnknownLayoutIsNeeded()) {
+        std::size_t size = 0;
+        for (const Dof* dof : rDofSet) size = std::max<std::size_t>(size, dof->EquationId() + 1);
+        mLayout = UnknownLayoutFromDofs(rDofSet, size, rModelPart);
+    }
     // Free displacement equations of active slave nodes, by (node, component).
     std::map<std::pair<const Node*, int>, int> displacement_rows;
     for (const Dof* dof : rDofSet) {
@@ -55,7 +62,21 @@ void MixedULMLinearSolver::ProvideAdditionalData(const std::vector<Dof*>& rDofSe
         const auto found = displacement_rows.find({&dof->GetNode(), c});
         if (found != displacement_rows.end()) mPairs.emplace_back(static_cast<int>(dof->EquationId()), found->second);
     }
+    for (const Dof* dof : rDofSet) {
+        if (dof->IsFixed() || dof->GetVariable() != LAGRANGE_MULTIPLIER_CONTACT_PRESSURE) continue;
+        std::vector<int> rows;
+        for (int c = 0; c < 3; ++c) {
+            const auto found = displacement_rows.find({&dof->GetNode(), c});
+            if (found != displacement_rows.end()) rows.push_back(found->second);
+        }
+        if (!rows.empty()) mScalarCandidates.emplace_back(static_cast<int>(dof->EquationId()), std::move(rows));
+    }
     mHaveData = true;
+}
+
+void MixedULMLinearSolver::SolveFull(SparseMatrixType& rA, SystemVectorType& rX, SystemVectorType& rB) {
+    if (mInner->UnknownLayoutIsNeeded() && mLayout.size() > 0) mInner->ProvideUnknownLayout(mLayout);
+    mInner->Solve(rA, rX, rB);
 }
 
 void MixedULMLinearSolver::Solve(SparseMatrixType& rA, SystemVectorType& rX, SystemVectorType& rB) {
@@ -64,36 +85,68 @@ void MixedULMLinearSolver::Solve(SparseMatrixType& rA, SystemVectorType& rX, Sys
     const bool have_data = mHaveData;
     mHaveData = false;
     const int n = static_cast<int>(rA.rows());
-    if (!have_data || mPairs.empty()) return mInner->Solve(rA, rX, rB);
+    // Scalar multipliers: the row of the node where the multiplier couples most.
+    std::vector<std::pair<int, int>> pairs = mPairs;
+    for (const auto& [lambda, rows] : mScalarCandidates) {
+        if (lambda >= n) continue;
+        int best = -1;
+        double largest = 0.0;
+        for (const int row : rows) {
+            if (row >= n) continue;
+            const double value = std::abs(rA.coeff(row, lambda));
+            if (value > largest) {
+                largest = value;
+                best = row;
+            }
+        }
+        if (best >= 0) pairs.emplace_back(lambda, best);
+    }
+    if (!have_data || pairs.empty()) return SolveFull(rA, rX, rB);
 
     // Classify: condensed multiplier unknowns E, their paired rows S; everything else is kept (R).
     std::vector<int> multiplier_of_row(n, -1), is_condensed(n, 0);
-    for (const auto& [lambda, row] : mPairs) {
-        if (lambda >= n || row >= n) return mInner->Solve(rA, rX, rB);
+    for (const auto& [lambda, row] : pairs) {
+        if (lambda >= n || row >= n) return SolveFull(rA, rX, rB);
         multiplier_of_row[row] = lambda;
         is_condensed[lambda] = 1;
     }
     // K_SE must be diagonal (dual basis): a paired row may couple to its own multiplier only, other couplings being
     // round-off of the dual basis (|K| ≤ 1e-10 |K_diag|, dropped).
     std::vector<double> diagonal(n, 0.0);
-    for (const auto& [lambda, row] : mPairs) diagonal[row] = rA.coeff(row, lambda);
+    for (const auto& [lambda, row] : pairs) diagonal[row] = rA.coeff(row, lambda);
     constexpr double kRoundOff = 1.0e-10;
     for (int col = 0; col < rA.outerSize(); ++col)
         for (SparseMatrixType::InnerIterator it(rA, col); it; ++it) {
             const int row = static_cast<int>(it.row());
             if (multiplier_of_row[row] < 0 || !is_condensed[col] || col == multiplier_of_row[row]) continue;
-            if (std::abs(it.value()) > kRoundOff * std::abs(diagonal[row])) return mInner->Solve(rA, rX, rB);
+            if (std::abs(it.value()) > kRoundOff * std::abs(diagonal[row])) return SolveFull(rA, rX, rB);
         }
-    for (const auto& [lambda, row] : mPairs)
-        if (std::abs(diagonal[row]) < 1e-300) return mInner->Solve(rA, rX, rB);
+    for (const auto& [lambda, row] : pairs)
+        if (std::abs(diagonal[row]) < 1e-300) return SolveFull(rA, rX, rB);
 
-    // Reduced numbering: kept rows (not paired) and kept unknowns (not condensed) have the same count.
-    std::vector<int> reduced_row(n, -1), reduced_col(n, -1);
+    // Multiplier → its paired row.
+    std::vector<int> row_of_multiplier(n, -1);
+    for (const auto& [lambda, row] : pairs) row_of_multiplier[lambda] = row;
+
+    // Reduced numbering: kept rows (not paired) and kept unknowns (not condensed) have the same count. For an
+    // inner solver that wants the layout, the row of a condensed multiplier takes the place of its paired
+    // displacement row (and the reduced unknown j is the full system's unknown kept[j]).
+    const bool remap = mInner->UnknownLayoutIsNeeded();
+    std::vector<int> reduced_row(n, -1), reduced_col(n, -1), kept_unknowns;
     int rows = 0, cols = 0;
     for (int i = 0; i < n; ++i) {
-        if (multiplier_of_row[i] < 0) reduced_row[i] = rows++;
-        if (!is_condensed[i]) reduced_col[i] = cols++;
+        if (!remap && multiplier_of_row[i] < 0) reduced_row[i] = rows++;
+        if (!is_condensed[i]) {
+            reduced_col[i] = cols++;
+            kept_unknowns.push_back(i);
+        }
     }
+    if (remap)
+        for (int i = 0; i < n; ++i) {
+            if (multiplier_of_row[i] >= 0) continue;
+            reduced_row[i] = is_condensed[i] ? reduced_col[row_of_multiplier[i]] : reduced_col[i];
+            ++rows;
+        }
     CONTACT_CHECK(rows == cols, InternalError, "mixed_ulm_linear_solver: ", rows, " kept rows for ", cols,
                   " kept unknowns");
 
@@ -113,10 +166,6 @@ void MixedULMLinearSolver::Solve(SparseMatrixType& rA, SystemVectorType& rX, Sys
                 kept.emplace_back(reduced_row[row], reduced_col[col], it.value());
             }
         }
-    // Multiplier → its paired row.
-    std::vector<int> row_of_multiplier(n, -1);
-    for (const auto& [lambda, row] : mPairs) row_of_multiplier[lambda] = row;
-
     SystemVectorType reduced_b(rows);
     for (int i = 0; i < n; ++i)
         if (reduced_row[i] >= 0) reduced_b[reduced_row[i]] = rB[i];
@@ -134,6 +183,21 @@ void MixedULMLinearSolver::Solve(SparseMatrixType& rA, SystemVectorType& rX, Sys
     SparseMatrixType reduced(rows, cols);
     reduced.setFromTriplets(kept.begin(), kept.end());
     reduced.makeCompressed();
+    if (remap) {
+        // Each moved multiplier row is scaled to the diagonal of the displacement row whose place it takes (an
+        // equation's scale is free; the AMG's strength of connection reads it).
+        std::vector<double> scale(rows, 1.0);
+        for (const auto& [lambda, row] : pairs) {
+            const int at = reduced_row[lambda];
+            const double own = std::abs(reduced.coeff(at, at));
+            const double displacement = std::abs(rA.coeff(row, row));
+            if (at >= 0 && own > 0.0 && displacement > 0.0) scale[at] = displacement / own;
+        }
+        for (int col = 0; col < reduced.outerSize(); ++col)
+            for (SparseMatrixType::InnerIterator it(reduced, col); it; ++it) it.valueRef() *= scale[it.row()];
+        for (int i = 0; i < rows; ++i) reduced_b[i] *= scale[i];
+        mInner->ProvideUnknownLayout(mLayout.Subset(kept_unknowns));
+    }
 
     SystemVectorType reduced_x = SystemVectorType::Zero(cols);
     mInner->Solve(reduced, reduced_x, reduced_b);
@@ -141,13 +205,13 @@ void MixedULMLinearSolver::Solve(SparseMatrixType& rA, SystemVectorType& rX, Sys
     rX.setZero(n);
     for (int i = 0; i < n; ++i)
         if (reduced_col[i] >= 0) rX[i] = reduced_x[reduced_col[i]];
-    for (const auto& [lambda, row] : mPairs) {
+    for (const auto& [lambda, row] : pairs) {
         double value = rB[row];
         for (const auto& [col, k_sr] : paired_row_entries[row]) value -= k_sr * rX[col];
         rX[lambda] = value / diagonal[row];
     }
     mLastCondensed = true;
-    mLastCondensedCount = mPairs.size();
+    mLastCondensedCount = pairs.size();
 }
 
 }  // namespace contact_app

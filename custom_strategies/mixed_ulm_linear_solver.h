@@ -18,6 +18,10 @@ namespace contact_app {
 ///   (K_R,R − K_R,E K_SE⁻¹ K_S,R) Δu_R = r_R − K_R,E K_SE⁻¹ r_S,
 /// solved with the inner solver; λ_E is recovered afterwards. This is the reference's reduction written over the
 /// general row/unknown split (the reference's N | M | SI | SA blocks are its special case).
+/// Scalar normal multipliers (ALMContactFrictionless) are condensed the same way, each paired with the displacement
+/// row of its node where it couples most (the largest normal component); the reference condenses vector
+/// multipliers only. When the inner solver wants the unknown layout (an AMG), each kept multiplier row takes the
+/// place of its paired displacement row, so the reduced matrix keeps a displacement-sized diagonal.
 /// Unlike the reference, the condensation is only used when it is exact: if a paired row couples to another
 /// condensed multiplier beyond round-off (|K| > 1e-10 of its own coupling: a standard instead of a dual basis), or
 /// no data were provided (systems with master–slave constraints), the full system goes to the inner solver
@@ -39,6 +43,7 @@ public:
     }
     bool AdditionalPhysicalDataIsNeeded() const override { return true; }
     void ProvideAdditionalData(const std::vector<Dof*>& rDofSet, ModelPart& rModelPart) override;
+    bool UnknownLayoutIsNeeded() const override { return mInner->UnknownLayoutIsNeeded(); }
 
     /// Whether the last Solve condensed the multipliers, and how many it condensed.
     bool LastSolveWasCondensed() const { return mLastCondensed; }
@@ -46,8 +51,16 @@ public:
 
 private:
     LinearSolver::Pointer mInner;
+    /// Solves the full system with the inner solver (handing it the full layout when it wants one).
+    void SolveFull(SparseMatrixType& rA, SystemVectorType& rX, SystemVectorType& rB);
+
     /// (multiplier equation, paired slave displacement equation) of the next solve; empty = no data.
     std::vector<std::pair<int, int>> mPairs;
+    /// Scalar multipliers (LAGRANGE_MULTIPLIER_CONTACT_PRESSURE) of active slave nodes and the free displacement
+    /// equations of their node: paired in Solve with the row of the largest coupling (the normal's largest
+    /// component).
+    std::vector<std::pair<int, std::vector<int>>> mScalarCandidates;
+    UnknownLayout mLayout;  // of the full system, when the inner solver wants one
     bool mHaveData = false;
     bool mLastCondensed = false;
     std::size_t mLastCondensedCount = 0;

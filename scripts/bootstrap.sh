@@ -4,7 +4,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-apt_packages=(build-essential libeigen3-dev libsuitesparse-dev libmumps-seq-dev libopenblas0-pthread libgtest-dev ccache ninja-build)
+# libpetsc-real-dev (+ pkg-config to find it, openmpi-bin for mpirun): the iterative solver (docs/architecture.md).
+apt_packages=(build-essential libeigen3-dev libsuitesparse-dev libmumps-seq-dev libopenblas0-pthread libgtest-dev ccache
+  ninja-build pkg-config libpetsc-real-dev openmpi-bin)
 missing=()
 for package in "${apt_packages[@]}"; do
   dpkg -s "$package" >/dev/null 2>&1 || missing+=("$package")

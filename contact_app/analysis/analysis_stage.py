@@ -138,6 +138,7 @@ class AnalysisStage:
             self.end_time,
             self._ExpectedSteps(),
             contact_columns=hasattr(self._GetSolver(), "ContactStatus"),
+            krylov_column=bool(self._LinearSolverStatistics().get("krylov", False)),
         )
         self.reporter.non_convergence_policy = self._NonConvergencePolicyNote()
         self.reporter.echo_linear_solver = self.echo_level >= 1
@@ -149,12 +150,16 @@ class AnalysisStage:
                 builder = solver.GetBuilderAndSolver()
                 builder.ResetTimings()
                 self.reporter.begin_step(int(solver.GetComputingModelPart().ProcessInfo[ca.STEP]))
+                solves_before = len(self._LinearSolverStatistics().get("krylov_iterations", []))
                 converged = self._TrySolveStep()
                 cutting = self._StepCutting() if not converged else None
                 if cutting is not None:
                     converged = self._SolveWithSubsteps(*cutting)
                 self.reporter.add_builder_timings(builder.GetTimings())
-                self.reporter.record_step(self._StepRecord(converged))
+                record = self._StepRecord(converged)
+                krylov = self._LinearSolverStatistics().get("krylov_iterations", [])
+                record.krylov = [int(n) for n in krylov[solves_before:]] if krylov else None
+                self.reporter.record_step(record)
                 if hasattr(solver, "GetLinearSolver"):
                     self.reporter.add_linear_solver(solver.GetLinearSolver().GetStatistics())
                 if not converged and (self._gave_up or not self._GoesOnAfterNonConvergence()):
@@ -435,6 +440,13 @@ class AnalysisStage:
 
     def _ExpectedSteps(self) -> int | None:
         return None
+
+    def _LinearSolverStatistics(self) -> dict:
+        """The linear solver's figures (``LinearSolver.GetStatistics()``), {} without one."""
+        solver = self._GetSolver()
+        if not hasattr(solver, "GetLinearSolver"):
+            return {}
+        return dict(solver.GetLinearSolver().GetStatistics())
 
     def _StepRecord(self, converged: bool) -> StepRecord:
         solver = self._GetSolver()

@@ -38,6 +38,9 @@ _HEADER = (
     f"{'dx ratio':>9}  {'dx abs':>9}  converged"
 )
 _CONTACT_HEADER = f"  {'active':>6}  {'slip':>6}  {'pairs':>6}  {'max pen.':>9}"
+_KRYLOV_HEADER = "  krylov its"
+#: Krylov iteration counts shown per step row (the rest is "...").
+KRYLOV_SHOWN = 8
 #: Seconds a step runs before its live Newton line appears.
 LIVE_AFTER = 2.0
 
@@ -55,6 +58,8 @@ class StepRecord:
         converged: whether the step converged.
         contact: (active slave nodes, slipping ones, pairs, max penetration) of a contact
             analysis, None otherwise.
+        krylov: the iterations of every linear solve of the step (one per Newton iteration) with an
+            iterative solver, None otherwise.
 
     """
 
@@ -65,6 +70,7 @@ class StepRecord:
     increment: tuple[float, float] | None
     converged: bool
     contact: tuple[int, int, int, float] | None = None
+    krylov: list[int] | None = None
 
 
 @dataclass
@@ -109,6 +115,18 @@ def linear_solver_text(statistics: dict, *, largest: bool = True) -> str:
     count = int(statistics.get("factorizations", 0))
     if count:
         text += f", {count} factorisation{'s' if count != 1 else ''}"
+    iterations = [int(n) for n in statistics.get("krylov_iterations", [])]
+    if statistics.get("krylov") and iterations:
+        text += (
+            f", {statistics.get('krylov_method', '')}: {len(iterations)} solves, "
+            f"{sum(iterations)} iterations (max {max(iterations)}, mean "
+            f"{sum(iterations) / len(iterations):.1f}) to a relative residual of "
+            f"{float(statistics.get('tolerance', 0.0)):.0e}, set-up "
+            f"{float(statistics.get('preconditioner_seconds', 0.0)):.3g} s, iterations "
+            f"{float(statistics.get('krylov_seconds', 0.0)):.3g} s"
+        )
+        if int(statistics.get("near_null_space", 0)):
+            text += f", {int(statistics['near_null_space'])} rigid-body modes"
     key = "max_factor" if largest else "factor"
     nonzeros = float(statistics.get(f"{key}_nonzeros", 0.0))
     if nonzeros > 0.0:
@@ -187,6 +205,7 @@ class Reporter:
         self._span = (0.0, 0.0)
         self._expected: int | None = None
         self._contact_columns = False
+        self._krylov_column = False
         #: Steps redone in sub-steps, and the sub-steps solved for them.
         self.cut_steps = 0
         self.sub_steps = 0
@@ -236,9 +255,15 @@ class Reporter:
         end_time: float,
         expected_steps: int | None,
         contact_columns: bool = False,
+        krylov_column: bool = False,
     ) -> None:
-        """Print the table header (with the contact columns of a contact analysis)."""
+        """Print the table header.
+
+        With the contact columns of a contact analysis, and the iterations of each linear solve
+        with an iterative solver.
+        """
         self._contact_columns = contact_columns
+        self._krylov_column = krylov_column
         self._span = (start_time, end_time)
         self._expected = expected_steps
         several = expected_steps is None or expected_steps > 1
@@ -248,7 +273,11 @@ class Reporter:
                 f"no step to solve: start_time {start_time} is not below end_time {end_time}"
             )
             return
-        self._print(_HEADER + (_CONTACT_HEADER if contact_columns else ""))
+        self._print(
+            _HEADER
+            + (_CONTACT_HEADER if contact_columns else "")
+            + (_KRYLOV_HEADER if krylov_column else "")
+        )
 
     def begin_step(self, step: int) -> None:
         """Start the clock of step ``step`` (its live line appears ``live_after`` s later)."""
@@ -306,6 +335,10 @@ class Reporter:
             active, slip, pairs, penetration = record.contact
             row = row[: row.rfind("  ") + 2] + f"{row[row.rfind('  ') + 2 :]:>9}"
             row += f"  {active:>6}  {slip:>6}  {pairs:>6}  {_norm(penetration)}"
+        if self._krylov_column:
+            counts = record.krylov or []
+            shown = " ".join(str(n) for n in counts[:KRYLOV_SHOWN])
+            row += "  " + (shown + (" ..." if len(counts) > KRYLOV_SHOWN else "") or "-")
         self._print(row)
 
     def _DrawBar(self) -> None:

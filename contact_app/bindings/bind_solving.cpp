@@ -52,13 +52,24 @@ void BindLinearSolvers(py::module_& m) {
                 statistics["condensed_solves"] = s.condensed_solves;
                 statistics["bulk_seconds"] = s.bulk_seconds;
                 statistics["interface_seconds"] = s.interface_seconds;
+                statistics["krylov"] = s.krylov;
+                statistics["krylov_method"] = s.krylov_method;
+                statistics["krylov_iterations"] = s.krylov_iterations;
+                statistics["last_relative_residual"] = s.last_relative_residual;
+                statistics["tolerance"] = s.tolerance;
+                statistics["preconditioner_seconds"] = s.preconditioner_seconds;
+                statistics["krylov_seconds"] = s.krylov_seconds;
+                statistics["ranks"] = s.ranks;
+                statistics["near_null_space"] = s.near_null_space;
                 return statistics;
             },
             "solver, ordering (used) and ordering_setting (asked for), factorizations, system_size, "
             "factor_nonzeros (nnz L + U) and factor_memory (bytes) of the last factorisation, and their maxima; factor_flops, symbolic_seconds and "
             "numeric_seconds (CPU) summed over the run, symbolic_analyses; static condensation: condensation ('' = "
             "not a condensing solver, 'yes' or 'no (why)'), interface_size and bulk_size of the last condensed solve, "
-            "bulk_factorizations, condensed_solves, bulk_seconds and interface_seconds (wall).");
+            "bulk_factorizations, condensed_solves, bulk_seconds and interface_seconds (wall); Krylov solvers: krylov "
+            "(True), krylov_method, krylov_iterations (per solve of the run), last_relative_residual, tolerance, "
+            "preconditioner_seconds, krylov_seconds (wall), ranks (MPI) and near_null_space (rigid-body modes given).");
     py::class_<StaticCondensationSolver, LinearSolver, std::shared_ptr<StaticCondensationSolver>>(
         m, "StaticCondensationSolver",
         "Condenses a constant bulk onto the contact interface (linear_solver_settings.static_condensation).")
@@ -73,13 +84,55 @@ void BindLinearSolvers(py::module_& m) {
         .def("InnerSolver", &StaticCondensationSolver::InnerSolver, "The solver of the full system.");
     m.def(
         "CreateLinearSolver",
-        [](const std::string& solver_type, double tolerance, int max_iteration, const std::string& ordering) {
-            return CreateLinearSolver({solver_type, tolerance, max_iteration, ordering});
+        [](const std::string& solver_type, double tolerance, int max_iteration, const std::string& ordering,
+           const std::string& krylov_type, const std::string& preconditioner_type, const std::string& smoother_type,
+           const std::string& coarsening_type, int gmres_krylov_space_dimension, int verbosity, int max_levels,
+           int coarse_enough, int pre_sweeps, int post_sweeps) {
+            KrylovSettings krylov;
+            krylov.krylov_type = krylov_type;
+            krylov.preconditioner_type = preconditioner_type;
+            krylov.smoother_type = smoother_type;
+            krylov.coarsening_type = coarsening_type;
+            krylov.gmres_krylov_space_dimension = gmres_krylov_space_dimension;
+            krylov.verbosity = verbosity;
+            krylov.max_levels = max_levels;
+            krylov.coarse_enough = coarse_enough;
+            krylov.pre_sweeps = pre_sweeps;
+            krylov.post_sweeps = post_sweeps;
+            return CreateLinearSolver({solver_type, tolerance, max_iteration, ordering, krylov});
         },
         py::arg("solver_type") = "", py::arg("tolerance") = 1.0e-6, py::arg("max_iteration") = 1000,
-        py::arg("ordering") = "auto",
+        py::arg("ordering") = "auto", py::arg("krylov_type") = "", py::arg("preconditioner_type") = "",
+        py::arg("smoother_type") = "", py::arg("coarsening_type") = "", py::arg("gmres_krylov_space_dimension") = 100,
+        py::arg("verbosity") = 0, py::arg("max_levels") = -1, py::arg("coarse_enough") = 1000,
+        py::arg("pre_sweeps") = 1, py::arg("post_sweeps") = 1,
         "Linear solver for a Kratos or contact_app solver_type name ('' = skyline_lu_factorization: UMFPACK "
-        "or MUMPS by size); ordering (UMFPACK, MUMPS): 'auto', 'amd' or 'metis'.");
+        "or MUMPS by size); ordering (UMFPACK, MUMPS): 'auto', 'amd' or 'metis'; the other keywords are the "
+        "amgcl keys of the PETSc Krylov solver (solver_type 'amgcl', 'gmres', 'petsc').");
+    m.def(
+        "CheckKrylovSettings",
+        [](const std::string& krylov_type, const std::string& preconditioner_type, const std::string& smoother_type,
+           const std::string& coarsening_type) {
+            KrylovSettings krylov;
+            krylov.krylov_type = krylov_type;
+            krylov.preconditioner_type = preconditioner_type;
+            krylov.smoother_type = smoother_type;
+            krylov.coarsening_type = coarsening_type;
+            PetscOptionsFromSettings(krylov);
+        },
+        py::arg("krylov_type") = "", py::arg("preconditioner_type") = "", py::arg("smoother_type") = "",
+        py::arg("coarsening_type") = "",
+        "Raises InputError for a krylov_type, preconditioner_type, smoother_type or coarsening_type the PETSc solver "
+        "does not take (without loading PETSc).");
+    m.def("PetscUnavailableReason", &PetscUnavailableReason,
+          "'' when the PETSc solver is available, else why not and which package provides it.");
+    m.def(
+        "MpiRankAndSize",
+        []() {
+            const auto solver = std::make_shared<PetscKrylovSolver>(KrylovSettings{});
+            return std::make_pair(solver->Rank(), solver->Ranks());
+        },
+        "(rank, ranks) of PETSC_COMM_WORLD (initialises PETSc and MPI; ConfigurationError without PETSc).");
     m.def("registered_linear_solvers", &RegisteredLinearSolverNames, "Every accepted linear solver_type, sorted.");
     m.def("ResolveLinearSolverName", &ResolveLinearSolverName, py::arg("solver_type"),
           "The solver a solver_type name maps to.");

@@ -19,7 +19,11 @@ from contact_app.analysis.solvers.convergence_criteria_factory import (
     ConvergenceCriterion,
     check_criterion_name,
 )
-from contact_app.analysis.solvers.mechanical_solver import bulk_not_linear, static_condensation_mode
+from contact_app.analysis.solvers.mechanical_solver import (
+    bulk_not_linear,
+    is_iterative,
+    static_condensation_mode,
+)
 from contact_app.analysis.validation import error, not_supported
 from contact_app.legacy_keys import convert_legacy_keys
 from contact_app.parameters import Parameters, suggest
@@ -306,7 +310,15 @@ class ContactSolverMixin(SolverMixinBase):
         interface, false never; the solver reports which ran and why in the run summary.
         """
         solver = self._CreateMultiplierSolver()
-        mode = static_condensation_mode(self.settings["linear_solver_settings"])
+        linear = self.settings["linear_solver_settings"]
+        mode = static_condensation_mode(linear)
+        if mode == "auto" and is_iterative(linear):
+            # The iterative route is for systems no factorisation fits: the bulk is not factorised.
+            return ca.StaticCondensationSolver(
+                solver,
+                "auto",
+                "the linear solver is iterative (amgcl/gmres: PETSc), nothing is factorised",
+            )
         reason = "" if mode == "off" else bulk_not_linear(self.GetComputingModelPart())
         if mode == "on" and reason:
             logger.warning(
@@ -324,7 +336,12 @@ class ContactSolverMixin(SolverMixinBase):
         vector_lm = self.mortar_type == "ALMContactFrictionlessComponents" or (
             self.mortar_type.startswith("ALMContactFrictional")
         )
-        if not (vector_lm and contact["use_mixed_ulm_solver"].GetBool()):
+        # The iterative route condenses every ALM family (scalar normal multipliers too): an AMG
+        # needs a displacement-sized system (docs/theory/condensation.md).
+        alm = self.mortar_type.startswith("ALMContact")
+        iterative = is_iterative(self.settings["linear_solver_settings"])
+        condensed = vector_lm or (alm and iterative)
+        if not (condensed and contact["use_mixed_ulm_solver"].GetBool()):
             return solver
         mixed = contact["mixed_ulm_solver_parameters"]
         mixed.ValidateAndAssignDefaults(MIXED_ULM_DEFAULTS)

@@ -63,6 +63,33 @@ LINEAR_SOLVER_KEYS: dict[str, Any] = {
     "symmetric_scaling": True,
 }
 
+#: The ``linear_solver_settings`` keys the PETSc Krylov solver (solver_type "amgcl", "gmres")
+#: honours beyond tolerance and max_iteration (docs/running.md, "Iterative solver (PETSc)").
+KRYLOV_KEYS = (
+    "krylov_type",
+    "preconditioner_type",
+    "smoother_type",
+    "coarsening_type",
+    "gmres_krylov_space_dimension",
+    "verbosity",
+    "max_levels",
+    "coarse_enough",
+    "pre_sweeps",
+    "post_sweeps",
+)
+#: Solvers of the iterative route: no static condensation under "auto", every ALM family condensed.
+ITERATIVE_SOLVERS = ("petsc",)
+
+
+def is_iterative(linear: Parameters) -> bool:
+    """Whether ``linear_solver_settings.solver_type`` maps to the PETSc Krylov solver."""
+    name = linear["solver_type"].GetString() if linear.Has("solver_type") else ""
+    try:
+        return bool(ca.ResolveLinearSolverName(name) in ITERATIVE_SOLVERS)
+    except ca.InputError:
+        return False
+
+
 TIME_STEPPING_KEYS: dict[str, Any] = {
     "time_step": 1.0,
     "time_step_table": [],
@@ -419,6 +446,16 @@ class MechanicalSolver:
                 ) from None
         if linear.Has("tolerance"):
             positive(linear, "tolerance")
+        strings = ("krylov_type", "preconditioner_type", "smoother_type", "coarsening_type")
+        if is_iterative(linear) and any(linear.Has(key) for key in strings):
+            given = {key: linear[key].GetString() for key in strings if linear.Has(key)}
+            try:
+                ca.CheckKrylovSettings(**given)
+            except ca.InputError as failure:
+                first, _, rest = str(failure).partition("\n")
+                key = next((k for k in given if f".{k} " in first), "solver_type")
+                where = linear.Where(key)
+                raise ca.InputError(f"{first}\n  where:    {where}\n{rest}") from None
         static_condensation_mode(linear)
         if linear.Has("ordering"):
             solver_type = linear["solver_type"].GetString() if linear.Has("solver_type") else ""
@@ -786,7 +823,12 @@ class MechanicalSolver:
         tolerance = linear["tolerance"].GetDouble() if linear.Has("tolerance") else 1.0e-6
         max_iteration = linear["max_iteration"].GetInt() if linear.Has("max_iteration") else 1000
         ordering = linear["ordering"].GetString() if linear.Has("ordering") else "auto"
-        return ca.CreateLinearSolver(solver_type, tolerance, max_iteration, ordering)
+        krylov: dict[str, Any] = {}
+        for key in KRYLOV_KEYS:
+            if linear.Has(key):
+                value = linear[key]
+                krylov[key] = value.GetString() if value.IsString() else value.GetInt()
+        return ca.CreateLinearSolver(solver_type, tolerance, max_iteration, ordering, **krylov)
 
     def _CreateBuilderAndSolver(self) -> Any:
         kind = self.settings["builder_and_solver_settings"]["type"].GetString()

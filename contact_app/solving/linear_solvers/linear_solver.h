@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "contact_app/solving/linear_solvers/unknown_layout.h"
 #include "contact_app/solving/system_types.h"
 
 namespace contact_app {
@@ -35,6 +36,16 @@ struct LinearSolverStatistics {
     std::size_t condensed_solves = 0;
     double bulk_seconds = 0.0;       ///< wall time of all bulk factorisations and Schur products
     double interface_seconds = 0.0;  ///< wall time of all condensed solves (interface LU, bulk back-solves)
+    // Krylov solvers (PetscKrylovSolver; docs/running.md, "Iterative solver (PETSc)"):
+    bool krylov = false;                   ///< an iterative solver: the step table shows its iterations
+    std::string krylov_method;             ///< "gmres + gamg, 4 levels" of the last solve
+    std::vector<int> krylov_iterations;    ///< iterations of every solve of the run, in order
+    double last_relative_residual = 0.0;   ///< ‖b − Ax‖/‖b‖ of the last solve
+    double tolerance = 0.0;
+    double preconditioner_seconds = 0.0;   ///< wall time of all matrix distributions and preconditioner set-ups
+    double krylov_seconds = 0.0;           ///< wall time of all Krylov iterations
+    int ranks = 0;                         ///< MPI ranks of the last solve (0 = not an MPI solver)
+    std::size_t near_null_space = 0;       ///< near-null-space vectors given to the AMG (rigid-body modes)
 };
 
 /// Solves A x = b for the global system (Kratos LinearSolver). Direct solvers keep their
@@ -64,6 +75,11 @@ public:
     virtual bool AdditionalPhysicalDataIsNeeded() const { return false; }
     /// The DoF set (equation id = position in the system) and the model part of the next Solve.
     virtual void ProvideAdditionalData(const std::vector<Dof*>& rDofSet, ModelPart& rModelPart) {}
+    /// True when Solve needs the node and component of each unknown (the rigid-body modes of an AMG).
+    /// A solver that hands a reduced system to an inner one (MixedULMLinearSolver) passes the reduced layout.
+    virtual bool UnknownLayoutIsNeeded() const { return false; }
+    /// The layout of the next Solve's unknowns (overrides what ProvideAdditionalData gave).
+    virtual void ProvideUnknownLayout(UnknownLayout layout) {}
 };
 
 }  // namespace contact_app

@@ -46,9 +46,12 @@ constexpr SolverNameRow kSolverNames[] = {
     {"CGSolver", "cg"},
     {"bicgstab", "bicgstab"},
     {"BICGSTABSolver", "bicgstab"},
-    {"amgcl", "bicgstab"},
-    {"AMGCL", "bicgstab"},
-    {"gmres", "bicgstab"},
+    {"amgcl", "petsc"},
+    {"AMGCL", "petsc"},
+    {"AMGCLSolver", "petsc"},
+    {"gmres", "petsc"},
+    {"GMRESSolver", "petsc"},
+    {"petsc", "petsc"},
 };
 
 std::string StripModulePrefix(const std::string& name) {
@@ -89,6 +92,12 @@ LinearSolver::Pointer CreateLinearSolver(const LinearSolverSettings& settings) {
     if (resolved == "cholmod") return std::make_shared<DirectSolver>(DirectSolverKind::Cholmod);
     if (resolved == "klu") return std::make_shared<DirectSolver>(DirectSolverKind::Klu);
     if (resolved == "sparse_lu") return std::make_shared<DirectSolver>(DirectSolverKind::SparseLU);
+    if (resolved == "petsc") {
+        KrylovSettings krylov = settings.krylov;
+        krylov.tolerance = settings.tolerance;
+        krylov.max_iteration = settings.max_iteration;
+        return std::make_shared<PetscKrylovSolver>(krylov);
+    }
     if (resolved == "cg")
         return std::make_shared<IterativeSolver>(IterativeSolverKind::ConjugateGradient, settings.tolerance,
                                                  settings.max_iteration);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "contact_app/solving/linear_solvers/linear_solver.h"
+#include "contact_app/solving/linear_solvers/petsc_krylov_solver.h"
 
 namespace contact_app {
 
@@ -19,12 +20,17 @@ struct LinearSolverSettings {
     /// Fill-reducing ordering of UMFPACK and MUMPS: "auto" (the measured best: for UMFPACK METIS for
     /// large systems, AMD for small ones), "amd" or "metis". Another solver accepts only "auto".
     std::string ordering = "auto";
+    /// The amgcl keys of the PETSc Krylov solver ("amgcl", "gmres", "petsc"); its tolerance and max_iteration
+    /// are the two above.
+    KrylovSettings krylov;
 };
 
 /// Creates the solver a name maps to. Every Kratos LU name maps to AutoDirectSolver (UMFPACK for
 /// small systems, MUMPS for large ones: all of them are LU factorisations that agree to round-off);
 /// "umfpack" and "mumps" to those alone, "cholmod" to CHOLMOD, "klu" to KLU, "sparse_lu" to Eigen's
-/// SparseLU; the iterative names to CG or BiCGSTAB(ILUT).
+/// SparseLU; "cg" and "bicgstab" to Eigen's CG or BiCGSTAB(ILUT); "amgcl", "gmres" and "petsc" to the PETSc
+/// Krylov solver with algebraic multigrid (PetscKrylovSolver; ConfigurationError naming the package when
+/// PETSc is not available).
 /// @throws InputError for an unknown name, listing the accepted names with a suggestion, and for an
 /// unknown ordering or an ordering given to a solver other than UMFPACK or MUMPS (naming
 /// linear_solver_settings.ordering).
@@ -34,7 +40,7 @@ LinearSolver::Pointer CreateLinearSolver(const LinearSolverSettings& settings);
 std::vector<std::string> RegisteredLinearSolverNames();
 
 /// The solver a name resolves to ("direct" = UMFPACK or MUMPS by size, "umfpack", "mumps", "cholmod",
-/// "klu", "sparse_lu", "cg", "bicgstab").
+/// "klu", "sparse_lu", "cg", "bicgstab", "petsc").
 /// @throws InputError for an unknown name.
 std::string ResolveLinearSolverName(const std::string& solver_type);
 

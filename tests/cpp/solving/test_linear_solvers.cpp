@@ -124,7 +124,8 @@ TEST(LinearSolverFactory, KratosNamesMapAndUnknownNamesSuggest) {
     EXPECT_EQ(ResolveLinearSolverName("LinearSolversApplication.sparse_lu"), "sparse_lu");
     EXPECT_EQ(ResolveLinearSolverName("pardiso_lu"), "direct");
     EXPECT_EQ(ResolveLinearSolverName("umfpack"), "umfpack");
-    EXPECT_EQ(ResolveLinearSolverName("amgcl"), "bicgstab");
+    EXPECT_EQ(ResolveLinearSolverName("amgcl"), "petsc");
+    EXPECT_EQ(ResolveLinearSolverName("gmres"), "petsc");
     EXPECT_EQ(ResolveLinearSolverName(""), "direct");
     try {
         ResolveLinearSolverName("skyline_lu_factorisation");
