@@ -226,7 +226,7 @@ void AddFrictionalExplicitContribution(TCondition& condition, const ProcessInfo&
     PairNodalShare<TDim, TNS>& share = condition.MutableNodalShare();
     Geometry& slave = *condition.pGetParentGeometry();
     for (int j = 0; j < TNS; ++j) {
-        share.area[j] = state.operators.D.row(j).sum();
+        share.area[j] = PairArea<double>(state, j);
         share.gap[j] = PairGap<double, TDim>(state, j);
         share.slip.row(j) = TangentSlip<double, TDim, TNS, TNM>(state, slip, j).transpose();
         AddPairShareToNode(slave[j], share.area[j], share.gap[j]);

@@ -98,6 +98,12 @@ NodalParameters<TNumNodes> ReadNodalParameters(const Geometry& slave, IndexType 
     return p;
 }
 
+/// a_j = Σ_k D_jk, the pair's share of NODAL_AREA (= ∫ N_j over the overlap, for the dual and the standard basis).
+template <class T, class TState>
+T PairArea(const TState& s, int j) {
+    return s.operators.D.row(j).sum();
+}
+
 /// g̃_j = −n_j·(D x1 − M x2)_j of the pair (positive = open).
 template <class T, int TDim, class TState>
 T PairGap(const TState& s, int j) {
@@ -122,19 +128,26 @@ void SpreadNormalForce(const TState& s, int j, const T& force, TVector& rhs) {
     SpreadForce<T, TDim, TNS, TNM>(s, j, f, rhs);
 }
 
+/// S_j[f] in values, one column per column of @p f (a nodal force per unit of a nodal quantity): out(r, k) is local RHS
+/// row r of S_j[f.col(k)], with D and M at their values (q = [u2, u1]).
+template <int TDim, int TNS, int TNM, class TState, class TForce, class TOut>
+void SpreadForceValues(const TState& s, int j, const TForce& f, TOut& out) {
+    constexpr int slave_offset = TDim * TNM;
+    out.setZero();
+    for (Eigen::Index k = 0; k < f.cols(); ++k)
+        for (int c = 0; c < TDim; ++c) {
+            for (int a = 0; a < TNS; ++a) out(slave_offset + a * TDim + c, k) += Value(s.operators.D(j, a)) * f(c, k);
+            for (int l = 0; l < TNM; ++l) out(l * TDim + c, k) -= Value(s.operators.M(j, l)) * f(c, k);
+        }
+}
+
 /// Records at slave node j of a penalty pair (AD pass) what the other pairs of the node need for their coupling
 /// blocks (nodal_gap_coupling.h): b_j = S_j[@p force_per_gap] in values and the gradient of @p penalty_gap, this
 /// pair's part of ∂(ηG)_j/∂q.
 template <class T, int TDim, int TNS, int TNM, class TState, class TRecord>
 void RecordNodalGapCoupling(const TState& s, int j, const Eigen::Matrix<double, TDim, 1>& force_per_gap,
                             const T& penalty_gap, TRecord& record) {
-    constexpr int slave_offset = TDim * TNM;
-    auto& b = record.force_per_gap[j];
-    b.setZero();
-    for (int c = 0; c < TDim; ++c) {
-        for (int a = 0; a < TNS; ++a) b[slave_offset + a * TDim + c] += Value(s.operators.D(j, a)) * force_per_gap[c];
-        for (int l = 0; l < TNM; ++l) b[l * TDim + c] -= Value(s.operators.M(j, l)) * force_per_gap[c];
-    }
+    SpreadForceValues<TDim, TNS, TNM>(s, j, force_per_gap, record.force_per_gap[j]);
     record.gap_gradient[j] = penalty_gap.Derivatives();
     record.coupled[j] = true;
 }
@@ -199,7 +212,7 @@ void AddFrictionlessExplicitContribution(TCondition& condition, const ProcessInf
     PairNodalShare<TDim, TNS>& share = condition.MutableNodalShare();
     Geometry& slave = *condition.pGetParentGeometry();
     for (int j = 0; j < TNS; ++j) {
-        share.area[j] = state.operators.D.row(j).sum();
+        share.area[j] = PairArea<double>(state, j);
         share.gap[j] = PairGap<double, TDim>(state, j);
         AddPairShareToNode(slave[j], share.area[j], share.gap[j]);
     }

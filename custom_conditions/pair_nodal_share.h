@@ -67,15 +67,23 @@ struct NodalInterfaceMap {
     }
     Eigen::Matrix<double, TNumNodes, TDim> transmitted_slip_offset =
         Eigen::Matrix<double, TNumNodes, TDim>::Zero();  ///< T − ω s⁰
+    Eigen::Matrix<double, TNumNodes, 1> inverse_nodal_area =
+        Eigen::Matrix<double, TNumNodes, 1>::Zero();  ///< 1/A, 0 without a valid share
 
     template <class T>
     Eigen::Matrix<T, TDim, 1> Slip(int j, const Eigen::Matrix<T, TDim, 1>& pair_slip) const {
         return pair_slip / weight[j] + slip_offset.row(j).transpose().template cast<T>();
     }
-    /// T̂_j(q) = T_j + ω_j (s_j(q) − s_j⁰): the slip the pairs' penalty stick rows transmit (Σ_c ω^c s^c).
+    /// T̂_j(q) = T_j + (a_j(q) s_j(q) − a_j⁰ s_j⁰) / A_j: the slip the pairs' penalty stick rows transmit
+    /// (Σ_c a^c s^c / A), with this pair's area and slip varying and A = NODAL_AREA held constant, as η is
+    /// (docs/theory/mortar.md §7 "Nodal penalty"). Its derivative is this pair's part of ∂T; the other pairs' parts
+    /// enter the tangent through the nodal coupling (nodal_gap_coupling.h). Without a valid share: the pair's own s.
     template <class T>
-    Eigen::Matrix<T, TDim, 1> TransmittedSlip(int j, const Eigen::Matrix<T, TDim, 1>& pair_slip) const {
-        return pair_slip * weight[j] + transmitted_slip_offset.row(j).transpose().template cast<T>();
+    Eigen::Matrix<T, TDim, 1> TransmittedSlip(int j, const T& pair_area,
+                                              const Eigen::Matrix<T, TDim, 1>& pair_slip) const {
+        if (inverse_nodal_area[j] == 0.0) return pair_slip;
+        return pair_slip * (pair_area * inverse_nodal_area[j]) +
+               transmitted_slip_offset.row(j).transpose().template cast<T>();
     }
 };
 
@@ -100,6 +108,7 @@ NodalInterfaceMap<TDim, TNumNodes> MakeNodalInterfaceMap(const Geometry& slave,
             map.transmitted_slip_offset.row(j) =
                 ContactUtilities::TransmittedWeightedSlip(node).template head<TDim>().transpose() -
                 share.slip.row(j) * map.weight[j];
+            map.inverse_nodal_area[j] = 1.0 / total_area;
         }
     }
     return map;

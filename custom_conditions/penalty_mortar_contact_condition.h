@@ -31,7 +31,7 @@ public:
     }
 
 protected:
-    using CouplingRecord = NodalGapCouplingRecord<TNumNodes, BaseType::MatrixSize>;
+    using CouplingRecord = NodalGapCouplingRecord<TDim, TNumNodes, BaseType::MatrixSize>;
     /// Written by the family's (const) AD residual.
     CouplingRecord* MutableCouplingRecord() const { return &mCouplingRecord; }
 

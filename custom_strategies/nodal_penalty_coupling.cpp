@@ -70,9 +70,11 @@ void NodalPenaltyCoupling::AddLHS(ModelPart& rModelPart, const ProcessInfo& rPro
         for (std::size_t c = 0; c < pairs.size(); ++c) {
             if (!coupled[c]) continue;
             for (std::size_t d = 0; d < pairs.size(); ++d) {
-                // A pair without terms (isolated now) adds nothing to G_j, so nothing to differentiate.
+                // A pair without terms (isolated now) adds nothing to G_j or T_j, so nothing to differentiate.
                 if (d == c || !coupled[d]) continue;
                 block = -terms[c].force_per_gap * terms[d].gap_gradient.transpose();
+                // A slipping node: every pair of it slips (the flag is nodal), its direction reads T_j.
+                if (terms[c].slipping && terms[d].slipping) block -= terms[c].force_per_slip * terms[d].slip_gradient;
                 rSink(*pairs[c].ids, *pairs[d].ids, &block);
             }
         }

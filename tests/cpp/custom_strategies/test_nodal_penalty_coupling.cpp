@@ -2,14 +2,19 @@
 /// The nodal penalty's global tangent (docs/theory/mortar.md §7 "Nodal penalty"): a slave face against two
 /// non-matching master faces, every slave node shared by both pairs and penetrating by a non-uniform gap. The pairs'
 /// local tangents plus the NodalPenaltyCoupling blocks must equal the central finite differences of the assembled
-/// residual, the nodal sums (WEIGHTED_GAP, NODAL_AREA, ...) recomputed at every perturbed state as the strategy does
-/// and η = Σ_c a_c² / A² held at its value, as the tangent holds it. Frictional families: every node sticks (the slip
-/// direction of a slipping node reads the transmitted slip, whose other-pair shares the tangent does not hold yet).
+/// residual, the nodal sums (WEIGHTED_GAP, AREA_WEIGHTED_PAIR_SLIP, ...) recomputed at every perturbed state as the
+/// strategy does, η = Σ_c a_c² / A² and A = NODAL_AREA held at their values, as the tangent holds them. Frictional
+/// families: every node sticks, or every node slips (its direction reads the transmitted slip T = Σ_c a_c s_c / A of
+/// all pairs, whose other-pair shares the coupling adds too); also with a triangular slave face on quadrilaterals.
 #include <cmath>
 #include <map>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "../custom_conditions/contact_condition_test_utilities.h"
 #include "contact_app/solving/schemes/scheme.h"
+#include "custom_conditions/nodal_gap_coupling.h"
 #include "custom_strategies/nodal_penalty_coupling.h"
 #include "custom_utilities/contact_utilities.h"
 
@@ -23,19 +28,21 @@ struct CouplingModel {
     std::vector<Dof*> dofs;  // the displacement DoFs, numbered 0..n−1
     int dim = 2;
     bool normal_variation = false;
-    std::map<IndexType, double> eta;  // slave node id → η held by the tangent
+    std::map<IndexType, double> eta;   // slave node id → η held by the tangent
+    std::map<IndexType, double> area;  // slave node id → NODAL_AREA held by the tangent
     ProcessInfo info;
 };
 
 /// 2D: slave [0, 1] at y = 0 (normal +y) against masters [−0.3, 0.4], [0.4, 1.3] sagging below it (penetration
-/// 0.01 ... 0.02). 3D: slave quad [0, 1]² against two quads split at x = 0.6 with a tilted, penetrating surface.
-void Build(CouplingModel& m, const std::string& family, int dim) {
+/// 0.01 ... 0.02). 3D: slave quad [0, 1]² (or the triangle of its first three corners, @p triangle) against two quads
+/// split at x = 0.6 with a tilted, penetrating surface. Frictional families: every slave node slips when @p slip.
+void Build(CouplingModel& m, const std::string& family, int dim, bool slip = false, bool triangle = false) {
     m.dim = dim;
     m.computing = &m.model.part->CreateSubModelPart("ComputingContact");
-    const std::string name = family + (dim == 2 ? "2D2N" : "3D4N");
+    const std::string name = family + (dim == 2 ? "2D2N" : triangle ? "3D3N4N" : "3D4N");
     const auto& row = DecodedName(name);
     const bool frictional = row.family == "PenaltyFrictional";
-    if (frictional) {  // sticking nodes: the slip of the step from the undeformed start, κ ε s per pair
+    if (frictional) {  // the slip of the step from the undeformed start: κ ε s per pair (stick), its direction (slip)
         m.model.part->AddNodalSolutionStepVariable(WEIGHTED_SLIP);
         m.model.part->SetBufferSize(2);
         m.info.SetValue(TANGENT_FACTOR, 0.4);
@@ -62,19 +69,20 @@ void Build(CouplingModel& m, const std::string& family, int dim) {
         slave_ids = {1, 2};
     } else {
         const double xs[][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-        for (int i = 0; i < 4; ++i) m.model.AddNode(1 + i, Eigen::Vector3d(xs[i][0], xs[i][1], 0.0));
+        const int num_slave = triangle ? 3 : 4;
+        for (int i = 0; i < num_slave; ++i) m.model.AddNode(1 + i, Eigen::Vector3d(xs[i][0], xs[i][1], 0.0));
         const double xm[] = {-0.2, 0.6, 1.3}, ym[] = {-0.1, 1.1};
         for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 2; ++j)
                 m.model.AddNode(11 + 2 * i + j, Eigen::Vector3d(xm[i], ym[j], -0.01 - 0.01 * xm[i] * xm[i] + 0.005 * ym[j]));
         n = Array3(0.0, 0.0, 1.0);
-        auto slave = geometry({1, 2, 3, 4});
+        slave_ids = triangle ? std::vector<IndexType>{1, 2, 3} : std::vector<IndexType>{1, 2, 3, 4};
+        auto slave = geometry(slave_ids);
         for (int f = 0; f < 2; ++f) {
             const IndexType a = 11 + 2 * f;
             m.pairs.push_back(prototype.Create(f + 1, slave, m.model.properties,
                                                geometry({a, IndexType(a + 1), IndexType(a + 3), IndexType(a + 2)})));
         }
-        slave_ids = {1, 2, 3, 4};
     }
     for (IndexType id : slave_ids) {
         Node& node = m.model.part->GetNode(id);
@@ -84,7 +92,7 @@ void Build(CouplingModel& m, const std::string& family, int dim) {
         node.SetValue(INITIAL_PENALTY, 1.0e3);
         node.SetValue(FRICTION_COEFFICIENT, 0.3);
         node.SetValue(TANGENT_XI, Array3(1.0, 0.0, 0.0));
-        node.Set(SLIP, false);
+        node.Set(SLIP, slip);
     }
     for (auto& pair : m.pairs) {
         pair->SetValue(NORMAL, n);
@@ -111,15 +119,17 @@ void SetDisplacement(Dof* dof, double value) {
 /// The explicit pass (nodal sums) at the current state, as the strategy runs it before each build.
 /// With normal variation the nodal normals follow the slave face (one face: its own nodal normals), as the search
 /// and the criteria set them.
-/// The tangent holds η = SQUARED_PAIR_AREA / NODAL_AREA² constant: the differenced residual keeps the η of the state
-/// the tangent was taken at (m.eta, once set).
+/// The tangent holds η = SQUARED_PAIR_AREA / NODAL_AREA² and A = NODAL_AREA constant: the differenced residual keeps
+/// the η and A of the state the tangent was taken at (m.eta, m.area, once set), so the transmitted slip is
+/// AREA_WEIGHTED_PAIR_SLIP / A with every pair's a_c s_c varying.
 void ExplicitPass(CouplingModel& m) {
     if (m.normal_variation) UpdateNormals(dynamic_cast<PairedCondition&>(*m.pairs[0]), m.dim);
     for (auto& pair : m.pairs) pair->SetValue(NORMAL, m.pairs[0]->GetValue(NORMAL));
     ContactUtilities::ComputeExplicitContributionConditions(*m.computing);
     for (const auto& [id, eta] : m.eta) {
         Node& node = m.model.part->GetNode(id);
-        node.SetValue(SQUARED_PAIR_AREA, eta * std::pow(node.GetValue(NODAL_AREA), 2));
+        node.SetValue(NODAL_AREA, m.area.at(id));
+        node.SetValue(SQUARED_PAIR_AREA, eta * std::pow(m.area.at(id), 2));
     }
 }
 
@@ -137,8 +147,11 @@ Eigen::VectorXd Residual(CouplingModel& m) {
     return total;
 }
 
-/// The assembled LHS: the pairs' local tangents, plus the coupling blocks when @p coupled.
-Eigen::MatrixXd Tangent(CouplingModel& m, bool coupled) {
+enum class Coupling { None, GapOnly, Full };
+
+/// The assembled LHS: the pairs' local tangents, plus the coupling blocks (Full: NodalPenaltyCoupling; GapOnly: its
+/// normal part −b^c (η∂g̃^d)ᵀ alone, what it added before the slip terms).
+Eigen::MatrixXd Tangent(CouplingModel& m, Coupling coupling_kind) {
     ExplicitPass(m);
     const ProcessInfo& info = m.info;
     const auto n = static_cast<Eigen::Index>(m.dofs.size());
@@ -152,7 +165,25 @@ Eigen::MatrixXd Tangent(CouplingModel& m, bool coupled) {
         for (std::size_t a = 0; a < ids.size(); ++a)
             for (std::size_t b = 0; b < ids.size(); ++b) total(ids[a], ids[b]) += lhs(a, b);
     }
-    if (coupled) {
+    if (coupling_kind == Coupling::GapOnly) {
+        std::vector<EquationIdVectorType> pair_ids(m.pairs.size());
+        for (std::size_t c = 0; c < m.pairs.size(); ++c) m.pairs[c]->EquationIdVector(pair_ids[c], info);
+        for (std::size_t c = 0; c < m.pairs.size(); ++c)
+            for (std::size_t d = 0; d < m.pairs.size(); ++d) {
+                if (c == d) continue;
+                const auto& source_c = dynamic_cast<const NodalGapCouplingSource&>(*m.pairs[c]);
+                const auto& source_d = dynamic_cast<const NodalGapCouplingSource&>(*m.pairs[d]);
+                for (int j = 0; j < static_cast<int>(m.pairs[c]->GetGeometry().size()); ++j) {
+                    NodalGapCouplingTerms tc, td;
+                    if (!source_c.GetNodalGapCoupling(j, tc) || !source_d.GetNodalGapCoupling(j, td)) continue;
+                    const Matrix block = -tc.force_per_gap * td.gap_gradient.transpose();
+                    for (std::size_t a = 0; a < pair_ids[c].size(); ++a)
+                        for (std::size_t b = 0; b < pair_ids[d].size(); ++b)
+                            total(pair_ids[c][a], pair_ids[d][b]) += block(a, b);
+                }
+            }
+    }
+    if (coupling_kind == Coupling::Full) {
         NodalPenaltyCoupling coupling;
         coupling.AddLHS(*m.model.part, info,
                         [&](const EquationIdVectorType& rows, const EquationIdVectorType& cols, const Matrix* block) {
@@ -163,6 +194,42 @@ Eigen::MatrixXd Tangent(CouplingModel& m, bool coupled) {
     return total;
 }
 
+/// Largest |assembled LHS − central differences| over the largest |central difference|, for each coupling kind, at a
+/// deformed state off every symmetry.
+struct TangentErrors {
+    double full = 0.0, gap_only = 0.0, none = 0.0;
+};
+
+TangentErrors MeasureTangent(CouplingModel& m) {
+    for (std::size_t i = 0; i < m.dofs.size(); ++i) SetDisplacement(m.dofs[i], 1e-3 * std::sin(1.0 + 3.7 * i));
+    ExplicitPass(m);
+    for (const auto& node : m.model.part->Nodes())
+        if (node->Is(SLAVE)) {
+            m.area[node->Id()] = node->GetValue(NODAL_AREA);
+            m.eta[node->Id()] = node->GetValue(SQUARED_PAIR_AREA) / std::pow(node->GetValue(NODAL_AREA), 2);
+        }
+    const Eigen::MatrixXd lhs = Tangent(m, Coupling::Full);
+    const Eigen::MatrixXd gap_only = Tangent(m, Coupling::GapOnly);
+    const Eigen::MatrixXd pairs_only = Tangent(m, Coupling::None);
+    const double h = 1e-7;
+    Eigen::MatrixXd fd(lhs.rows(), lhs.cols());
+    for (std::size_t i = 0; i < m.dofs.size(); ++i) {
+        const double u = m.dofs[i]->GetSolutionStepValue();
+        SetDisplacement(m.dofs[i], u + h);
+        const Eigen::VectorXd plus = Residual(m);
+        SetDisplacement(m.dofs[i], u - h);
+        const Eigen::VectorXd minus = Residual(m);
+        SetDisplacement(m.dofs[i], u);
+        fd.col(static_cast<Eigen::Index>(i)) = -(plus - minus) / (2.0 * h);
+    }
+    const double scale = fd.cwiseAbs().maxCoeff();
+    // Every slave node is active and penetrating.
+    for (const auto& node : m.model.part->Nodes())
+        if (node->Is(SLAVE)) EXPECT_LT(node->FastGetSolutionStepValue(WEIGHTED_GAP), 0.0);
+    return {(lhs - fd).cwiseAbs().maxCoeff() / scale, (gap_only - fd).cwiseAbs().maxCoeff() / scale,
+            (pairs_only - fd).cwiseAbs().maxCoeff() / scale};
+}
+
 class NodalPenaltyTangent : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(NodalPenaltyTangent, PairsPlusCouplingAreTheDerivativeOfTheAssembledResidual) {
@@ -170,33 +237,44 @@ TEST_P(NodalPenaltyTangent, PairsPlusCouplingAreTheDerivativeOfTheAssembledResid
         SCOPED_TRACE(dim);
         CouplingModel m;
         Build(m, GetParam(), dim);
-        // A deformed state off every symmetry.
-        for (std::size_t i = 0; i < m.dofs.size(); ++i) SetDisplacement(m.dofs[i], 1e-3 * std::sin(1.0 + 3.7 * i));
-        const Eigen::MatrixXd lhs = Tangent(m, true);
-        for (const auto& node : m.model.part->Nodes())
-            if (node->Is(SLAVE))
-                m.eta[node->Id()] = node->GetValue(SQUARED_PAIR_AREA) / std::pow(node->GetValue(NODAL_AREA), 2);
-        const Eigen::MatrixXd pairs_only = Tangent(m, false);
-        const double h = 1e-7;
-        Eigen::MatrixXd fd(lhs.rows(), lhs.cols());
-        for (std::size_t i = 0; i < m.dofs.size(); ++i) {
-            const double u = m.dofs[i]->GetSolutionStepValue();
-            SetDisplacement(m.dofs[i], u + h);
-            const Eigen::VectorXd plus = Residual(m);
-            SetDisplacement(m.dofs[i], u - h);
-            const Eigen::VectorXd minus = Residual(m);
-            SetDisplacement(m.dofs[i], u);
-            fd.col(static_cast<Eigen::Index>(i)) = -(plus - minus) / (2.0 * h);
-        }
-        const double scale = fd.cwiseAbs().maxCoeff();
-        EXPECT_LT((lhs - fd).cwiseAbs().maxCoeff(), 1e-6 * scale);
+        const TangentErrors e = MeasureTangent(m);
+        EXPECT_LT(e.full, 1e-6);
         // The coupling is what makes it exact: the pairs alone miss the cross-pair blocks.
-        EXPECT_GT((pairs_only - fd).cwiseAbs().maxCoeff(), 1e-2 * scale);
-        // Every slave node is active and penetrating.
-        for (const auto& node : m.model.part->Nodes())
-            if (node->Is(SLAVE)) EXPECT_LT(node->FastGetSolutionStepValue(WEIGHTED_GAP), 0.0);
+        EXPECT_GT(e.none, 1e-2);
     }
 }
+
+class NodalPenaltySlipTangent : public ::testing::TestWithParam<std::string> {};
+
+/// Slipping nodes: the direction t = (P e + T)/|P e + T| of every pair reads the other pairs' a_d s_d through T. In 3D
+/// the coupling's slip terms B^c ∂T/∂q_d are what makes the tangent exact: with the normal coupling alone (what it
+/// added before) the error is 0.44 (quadrilateral slave) and 0.29 (triangle on quadrilaterals) of the largest entry,
+/// with them 2e-8. In 2D the tangent space is a line: t = ±(tangent of n), so without normal variation t does not depend on
+/// T at all and the slip terms vanish (the normal coupling alone is exact, 9e-11); with normal variation P = I − n nᵀ
+/// turns with the face and they are 3e-3 of the largest entry.
+TEST_P(NodalPenaltySlipTangent, PairsPlusCouplingAreTheDerivativeOfTheAssembledResidual) {
+    const bool normal_variation = GetParam().find("NV") != std::string::npos;
+    for (const auto& [dim, triangle] : {std::pair{2, false}, std::pair{3, false}, std::pair{3, true}}) {
+        SCOPED_TRACE(std::to_string(dim) + (triangle ? "D3N4N" : "D"));
+        CouplingModel m;
+        Build(m, GetParam(), dim, true, triangle);
+        const TangentErrors e = MeasureTangent(m);
+        EXPECT_LT(e.full, 1e-6);
+        if (dim == 3)
+            EXPECT_GT(e.gap_only, 1e-1);
+        else if (normal_variation)
+            EXPECT_GT(e.gap_only, 1e-3);
+        else
+            EXPECT_LT(e.gap_only, 1e-6);
+        EXPECT_GT(e.none, 1e-1);
+        for (const auto& node : m.model.part->Nodes())
+            if (node->Is(SLAVE)) EXPECT_TRUE(node->Is(SLIP));
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Families, NodalPenaltySlipTangent,
+                         ::testing::Values("PenaltyFrictionalMortarContactCondition",
+                                           "PenaltyNVFrictionalMortarContactCondition"));
 
 INSTANTIATE_TEST_SUITE_P(Families, NodalPenaltyTangent,
                          ::testing::Values("PenaltyFrictionlessMortarContactCondition",
