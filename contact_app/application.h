@@ -31,7 +31,7 @@ class FrictionalLaw;
     X(double, TRESCA_FRICTION_THRESHOLD) X(std::shared_ptr<IndexMap>, INDEX_MAP)                  \
     X(std::shared_ptr<IndexSet>, INDEX_SET) X(double, OPERATOR_THRESHOLD)                         \
     X(bool, CONSIDER_TESSELLATION) X(double, BUILD_SCALE_FACTOR)                                  \
-    X(double, AREA_WEIGHTED_PAIR_GAP) X(double, SQUARED_PAIR_AREA)
+    X(double, AREA_WEIGHTED_PAIR_GAP) X(double, SQUARED_PAIR_AREA) X(double, SLIP_TRIAL_FACTOR)
 
 /// X(NAME), each with _X, _Y, _Z components.
 #define CONTACT_APP_CONTACT_ARRAY3_VARIABLES(X)                                                   \

@@ -8,10 +8,9 @@ namespace {
 using namespace frictional_detail;
 
 /// RHS of docs/theory/contact_residuals.md §5 for one pair, q = [u2 (d·n_m), u1 (d·n_s), λ (d·n_s)]. The slip law is
-/// nodal
-/// (docs/theory/mortar.md §7-8): k Pλ = −μ (kλ_n + ε Q̂) τ̄/|τ̄| with Q̂ the gap the pairs transmit and the direction
-/// of the trial traction τ̄ = kPλ + κεŜ (Ŝ the nodal weighted slip) instead of the reference's frozen t = Pλ/|Pλ|,
-/// which never turns in 3D; each pair adds its share ω_j of the law.
+/// nodal (docs/theory/mortar.md §7-8): k Pλ = −μ (kλ_n + ε Q̂) τ̄/|τ̄| with Q̂ the gap the pairs transmit and the
+/// direction of the trial traction τ̄ = kPλ + f ε Ŝ (Ŝ the nodal weighted slip, f the node's SLIP_TRIAL_FACTOR)
+/// instead of the reference's frozen t = Pλ/|Pλ|, which never turns in 3D; each pair adds its share ω_j of the law.
 template <class T, int TDim, int TNS, int TNM, class TState, class TVector>
 void AddALMFrictionalResidual(const TState& s, double k, const FrictionalParameters<TDim, TNS>& p,
                               const SlipData<TDim, TNS, TNM>& slip, const NodalInterfaceMap<TDim, TNS>& nodal,
@@ -38,7 +37,7 @@ void AddALMFrictionalResidual(const TState& s, double k, const FrictionalParamet
         lambda_row = n * (k * gap);
         if (p.slip[j]) {  // Coulomb slip, weighted by ω_j so that the pairs assemble the nodal law exactly
             const T augmented_normal = k * lambda_n + eps * nodal.TransmittedGap(j, gap);
-            const Vec trial = (p_lambda * k + nodal.Slip(j, pair_slip) * (ActiveSetUtilities::SlipTrialFactor(p.tangent_factor) * eps))
+            const Vec trial = (p_lambda * k + nodal.Slip(j, pair_slip) * (p.slip_trial_factor[j] * eps))
                                   .cwiseProduct(p.free_components.row(j).transpose().template cast<T>());
             const Vec direction = SlipDirection<T, TDim, TNS>(trial, p, j, std::abs(Value(augmented_normal)) + 1e-300);
             const Vec traction = p_lambda * k + direction * (p.mu[j] * augmented_normal);

@@ -15,6 +15,7 @@
 #include "contact_app/kernel/serializer.h"
 #include "automatic_differentiation/dual.h"
 #include "custom_conditions/frictionless_mortar_contact_common.h"
+#include "custom_utilities/active_set_utilities.h"
 
 namespace contact_app::frictional_detail {
 
@@ -60,6 +61,8 @@ struct FrictionalParameters {
     /// 1: a held component carries no traction, so the slip direction leaves it out.
     Eigen::Matrix<double, TNS, TDim> free_components = Eigen::Matrix<double, TNS, TDim>::Ones();
     double tangent_factor = 0.0;  ///< κ = TANGENT_FACTOR
+    /// c_t/ε of the ALM slip trial per node (ActiveSetUtilities::SlipTrialFactor, held constant in the tangent)
+    Eigen::Matrix<double, TNS, 1> slip_trial_factor = Eigen::Matrix<double, TNS, 1>::Ones();
 };
 
 /// Reads ε, δ, ACTIVE (via ReadNodalParameters, @p penalty_required_on as there), SLIP, μ, t and κ.
@@ -76,6 +79,7 @@ FrictionalParameters<TDim, TNS> ReadFrictionalParameters(const Geometry& slave, 
         const Node& node = slave[j];
         p.slip[j] = node.Is(SLIP);
         p.mu[j] = node.GetValue(FRICTION_COEFFICIENT);
+        p.slip_trial_factor[j] = ActiveSetUtilities::SlipTrialFactor(node, process_info);
         Eigen::Matrix<double, TDim, 1> t = node.GetValue(TANGENT_XI).template head<TDim>();
         if (!(t.norm() > 0.0)) t = FallbackTangent<TDim>(ToSpatialVector<TDim>(node.FastGetSolutionStepValue(NORMAL)));
         p.tangent.row(j) = t.transpose();

@@ -90,7 +90,8 @@ void BaseMortarConvergenceCriteria::UpdateTangents(ModelPart& rModelPart) const 
         n.normalize();
         Array3 direction = Array3::Zero();
         if (node->Is(ACTIVE) && node->Is(SLAVE))
-            direction = ActiveSetUtilities::TrialTangentialTraction(*node, info, with_multiplier);
+            direction = with_multiplier ? ActiveSetUtilities::SlipDirectionTrial(*node, info)
+                                        : ActiveSetUtilities::TrialTangentialTraction(*node, info, false);
         node->SetValue(TANGENT_XI, direction.norm() > kEps * (1.0 + direction.norm())
                                        ? Array3(direction / direction.norm())
                                        : OrthogonalUnit(n));
@@ -100,6 +101,10 @@ void BaseMortarConvergenceCriteria::UpdateTangents(ModelPart& rModelPart) const 
 void BaseMortarConvergenceCriteria::InitializeSolutionStep(ModelPart& rModelPart, DofsArrayType&,
                                                            const SparseMatrixType&, const SystemVectorType&,
                                                            const SystemVectorType&, const BuilderAndSolver&) {
+    // Each step starts from the slip law's own c_t (docs/theory/mortar.md §8).
+    if (mFamily == Family::ALM_FRICTIONAL)
+        if (ModelPart* contact = ContactUtilities::FindContactPart(rModelPart, "Contact"))
+            ActiveSetUtilities::ResetSlipTrialFactors(*contact);
     UpdateNormalsAndTangents(rModelPart);
     ProcessInfo& info = rModelPart.GetProcessInfo();
     info.SetValue(ACTIVE_SET_CONVERGED, true);

@@ -2,6 +2,7 @@
 #include "custom_utilities/active_set_utilities.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -137,6 +138,29 @@ bool Turned(const Node& node, const Array3& direction, double bound, double larg
            (previous / previous.norm() - direction).norm() * bound > kSlipDirectionTolerance * largest_bound;
 }
 
+/// Raises a slipping node's SLIP_TRIAL_FACTOR f when the iteration turned its direction by more than the slip law's
+/// linearisation covers: the trial k Pλ + f ε Pũτ resists a rotation θ only through f ε|Pũτ|, so its tangent holds
+/// for θ ≲ θ_f = √(2 f ε|Pũτ| / μ|λ̄n|). A turn θ > θ_f (from the build's TANGENT_XI to @p direction) sets f so that
+/// θ_f = kSlipTurnMargin θ, for the rest of the step (docs/theory/mortar.md §8). A converged slip state does not
+/// depend on f.
+void RaiseSlipTrialFactor(Node& node, const Array3& direction, double bound, double penalty) {
+    if (!node.Has(TANGENT_XI) || !node.Has(SLIP_TRIAL_FACTOR) || !(bound > 0.0) || !(penalty > 0.0)) return;
+    const Array3& previous = node.GetValue(TANGENT_XI);
+    if (previous.norm() == 0.0 || direction.norm() == 0.0) return;
+    const double cosine = std::clamp(previous.dot(direction) / (previous.norm() * direction.norm()), -1.0, 1.0);
+    const double turn = std::acos(cosine);
+    const Array3 normal = node.FastGetSolutionStepValue(NORMAL);
+    Array3 slip = node.FastGetSolutionStepValue(WEIGHTED_SLIP);
+    slip -= normal.dot(slip) * normal;
+    for (int c = 0; c < 3; ++c)
+        if (ContactUtilities::IsMultiplierComponentHeld(node, c)) slip[c] = 0.0;
+    const double stiffness = penalty * slip.norm();  // ε|Pũτ|
+    if (!(stiffness > 0.0)) return;
+    const double factor = node.GetValue(SLIP_TRIAL_FACTOR);
+    const double covered = std::sqrt(2.0 * factor * stiffness / bound);
+    if (turn > covered) node.SetValue(SLIP_TRIAL_FACTOR, kSlipTurnMargin * kSlipTurnMargin * turn * turn * bound / (2.0 * stiffness));
+}
+
 /// max over the slave nodes to update of μ |λ̄n|, with λ̄n as @p transmitted_normal computes it.
 template <class TNormal>
 double LargestFrictionBound(const std::vector<Node*>& nodes, TNormal&& transmitted_normal) {
@@ -150,8 +174,25 @@ double LargestFrictionBound(const std::vector<Node*>& nodes, TNormal&& transmitt
 
 }  // namespace
 
-Array3 TrialTangentialTraction(const Node& node, const ProcessInfo& process_info, bool with_multiplier) {
-    const double tangent_factor = process_info.Has(TANGENT_FACTOR) ? process_info.GetValue(TANGENT_FACTOR) : 0.0;
+double SlipTrialFactor(const Node& node, const ProcessInfo& process_info) {
+    const double own = node.Has(SLIP_TRIAL_FACTOR) ? node.GetValue(SLIP_TRIAL_FACTOR) : 0.0;
+    return own > 0.0 ? own
+                     : SlipTrialFactor(process_info.Has(TANGENT_FACTOR) ? process_info.GetValue(TANGENT_FACTOR) : 0.0);
+}
+
+void ResetSlipTrialFactors(ModelPart& rContact) {
+    const ProcessInfo& process_info = rContact.GetProcessInfo();
+    const double base =
+        SlipTrialFactor(process_info.Has(TANGENT_FACTOR) ? process_info.GetValue(TANGENT_FACTOR) : 0.0);
+    for (const auto& node : rContact.Nodes())
+        if (node->Is(SLAVE)) node->SetValue(SLIP_TRIAL_FACTOR, base);
+}
+
+namespace {
+
+/// k Pλ + f ε P ũτ (ALM, @p with_multiplier) or f ε P(T + e) (penalty): the trial tangential traction with the slip
+/// factor @p factor (c_t/ε).
+Array3 TangentialTrial(const Node& node, const ProcessInfo& process_info, bool with_multiplier, double factor) {
     const double penalty = Penalty(node, process_info);
     const Array3 normal = node.FastGetSolutionStepValue(NORMAL);
     const auto tangential = [&normal](const Array3& v) { return Array3(v - normal.dot(v) * normal); };
@@ -163,7 +204,7 @@ Array3 TrialTangentialTraction(const Node& node, const ProcessInfo& process_info
     } else {
         slip = ContactUtilities::TransmittedWeightedSlip(node) + node.GetValue(TANGENT_SLIP);
     }
-    Array3 trial = (with_multiplier ? SlipTrialFactor(tangent_factor) : tangent_factor) * penalty * tangential(slip);
+    Array3 trial = factor * penalty * tangential(slip);
     if (with_multiplier) {
         trial += process_info.GetValue(SCALE_FACTOR) * tangential(node.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER));
         // A held multiplier component carries no traction (a symmetry plane, docs/theory/mortar.md §8).
@@ -171,6 +212,18 @@ Array3 TrialTangentialTraction(const Node& node, const ProcessInfo& process_info
             if (ContactUtilities::IsMultiplierComponentHeld(node, c)) trial[c] = 0.0;
     }
     return trial;
+}
+
+}  // namespace
+
+Array3 TrialTangentialTraction(const Node& node, const ProcessInfo& process_info, bool with_multiplier) {
+    const double tangent_factor = process_info.Has(TANGENT_FACTOR) ? process_info.GetValue(TANGENT_FACTOR) : 0.0;
+    return TangentialTrial(node, process_info, with_multiplier,
+                           with_multiplier ? SlipTrialFactor(tangent_factor) : tangent_factor);
+}
+
+Array3 SlipDirectionTrial(const Node& node, const ProcessInfo& process_info) {
+    return TangentialTrial(node, process_info, true, SlipTrialFactor(node, process_info));
 }
 
 std::array<std::size_t, 2> ComputePenaltyFrictionalActiveSet(ModelPart& model_part, bool pure_slip) {
@@ -210,6 +263,8 @@ std::array<std::size_t, 2> ComputeALMFrictionalActiveSet(ModelPart& model_part, 
     const ProcessInfo& process_info = model_part.GetProcessInfo();
     const double k = ScaleFactor(process_info, "ComputeALMFrictionalActiveSet");
     const double slip_threshold = process_info.GetValue(SLIP_THRESHOLD);
+    // In 2D a direction is a sign: it flips, it does not turn.
+    const bool directions_turn = !process_info.Has(DOMAIN_SIZE) || process_info.GetValue(DOMAIN_SIZE) != 2;
     std::array<std::size_t, 2> flips{0, 0};
     const std::vector<Node*> nodes = SlaveNodesToUpdate(model_part);
     const double largest_bound = LargestFrictionBound(nodes, [&](Node& node) {
@@ -246,13 +301,16 @@ std::array<std::size_t, 2> ComputeALMFrictionalActiveSet(ModelPart& model_part, 
         const double threshold = was_slip ? 1.0 - slip_threshold : 1.0;
         const bool slip =
             pure_slip || mu < kMachineEpsilon || trial.norm() > -mu * transmitted_normal * threshold;
+        // The direction weighs the slip by the node's own c_t (SLIP_TRIAL_FACTOR, the one the build used).
+        const Array3 direction = Direction(SlipDirectionTrial(*node, process_info));
         node->SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE,
-                       slip ? Array3(-mu * transmitted_normal * Direction(trial)) : trial);
+                       slip ? Array3(-mu * transmitted_normal * direction) : trial);
         const std::size_t changed = UpdateSlip(*node, slip);
         if (!pure_slip) flips[1] += changed;
-        if (slip && was_slip && mu >= kMachineEpsilon &&
-            Turned(*node, Direction(trial), -mu * transmitted_normal, largest_bound))
-            ++flips[1];
+        if (slip && was_slip && mu >= kMachineEpsilon) {
+            if (Turned(*node, direction, -mu * transmitted_normal, largest_bound)) ++flips[1];
+            if (directions_turn) RaiseSlipTrialFactor(*node, direction, -mu * transmitted_normal, penalty);
+        }
     }
     return flips;
 }

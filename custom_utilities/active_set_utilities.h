@@ -41,9 +41,25 @@ inline double SlipTrialFactor(double tangent_factor) {
     return tangent_factor > 1.0 ? tangent_factor : 1.0;
 }
 
-/// The trial tangential traction of a slave node: λ̄τ = k Pλ + max(κ, 1) ε P ũτ (ALM, @p with_multiplier) or
+/// How far beyond a turn the raised slip trial's linearisation reaches: θ_f = 2θ (RaiseSlipTrialFactor).
+inline constexpr double kSlipTurnMargin = 2.0;
+
+/// The factor c_t/ε of a slave node's slip direction: its SLIP_TRIAL_FACTOR when set (> 0), else SlipTrialFactor(κ).
+double SlipTrialFactor(const Node& node, const ProcessInfo& process_info);
+
+/// Sets SLIP_TRIAL_FACTOR := max(κ, 1) on the SLAVE nodes of @p rContact (at the start of a step). The ALM frictional
+/// set update raises it on a slipping node whose direction turned beyond what the slip law's tangent covers, for the
+/// rest of the step (docs/theory/mortar.md §8).
+void ResetSlipTrialFactors(ModelPart& rContact);
+
+/// The trial tangential traction of a slave node that the stick/slip test reads: λ̄τ = k Pλ + max(κ, 1) ε P ũτ (ALM,
+/// @p with_multiplier) or
 /// κ ε P(ũτ + e) (penalty, e = TANGENT_SLIP the elastic weighted slip carried over from earlier steps).
 Array3 TrialTangentialTraction(const Node& node, const ProcessInfo& process_info, bool with_multiplier);
+
+/// The trial whose direction the ALM slip law imposes: k Pλ + c_t,j P ũτ with the node's own c_t,j =
+/// SlipTrialFactor(node) ε. At a converged slip state kPλ ∥ Pũτ, so it points as the test's trial does.
+Array3 SlipDirectionTrial(const Node& node, const ProcessInfo& process_info);
 
 /// @brief λ̄n = ε g̃; ACTIVE ⇔ λ̄n < 0. @return the number of nodes whose ACTIVE flag changed
 std::size_t ComputePenaltyFrictionlessActiveSet(ModelPart& model_part);

@@ -3,6 +3,8 @@
 // multiplier reset, stick/slip with hysteresis, change counters.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "contact_app/application.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/model.h"
@@ -240,6 +242,47 @@ TEST(ActiveSetUtilities, test_alm_frictional_frictionless_node_activation_drops_
     ActiveSetUtilities::ComputeALMFrictionalActiveSet(*m.root);
     EXPECT_LT((entering.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) - Array3(0, -0.5, 0)).norm(), 1e-15);
     EXPECT_TRUE(entering.Is(SLIP));  // μ = 0: any tangential traction exceeds the bound
+}
+
+TEST(ActiveSetUtilities, test_alm_frictional_turn_beyond_the_linearisation_raises_the_slip_trial_factor) {
+    // λ = (0.3, −1, 0): kPλ = (0.6, 0, 0), λ̄n = −2, μ = 0.25 → bound 0.5 < 0.6, slip; ε = 10, κ = 1 → f = 1.
+    ActiveSetModel m;
+    auto slipping = [&](const Array3& weighted_slip, const Array3& built_direction) -> Node& {
+        Node& node = m.Add(0.0, true, true);
+        node.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) = Array3(0.3, -1.0, 0.0);
+        node.FastGetSolutionStepValue(WEIGHTED_SLIP) = weighted_slip;
+        node.SetValue(FRICTION_COEFFICIENT, 0.25);
+        node.SetValue(TANGENT_XI, built_direction);
+        return node;
+    };
+    // Trial (0.6, 0, 0.01) with f = 1: both turned by θ = atan(0.01/0.6) from x, and by π/2 − θ from z.
+    Node& small_turn = slipping(Array3(0, 0, 1e-3), Array3(1, 0, 0));
+    Node& large_turn = slipping(Array3(0, 0, 1e-3), Array3(0, 0, 1));
+    ActiveSetUtilities::ResetSlipTrialFactors(*m.contact);
+    EXPECT_EQ(small_turn.GetValue(SLIP_TRIAL_FACTOR), 1.0);
+    ActiveSetUtilities::ComputeALMFrictionalActiveSet(*m.root);
+    EXPECT_TRUE(small_turn.Is(SLIP) && large_turn.Is(SLIP));
+    // θ_f = √(2 f ε|ũτ| / bound) = √0.04 = 0.2 covers θ = 0.0167, not 1.554.
+    const double theta = std::atan2(0.6, 0.01);
+    EXPECT_EQ(small_turn.GetValue(SLIP_TRIAL_FACTOR), 1.0);
+    const double raised = 4.0 * theta * theta * 0.5 / (2.0 * kPenalty * 1e-3);  // θ_f = 2θ
+    EXPECT_NEAR(large_turn.GetValue(SLIP_TRIAL_FACTOR), raised, 1e-12 * raised);
+    // The slip direction weighs the slip by the node's own factor; the stick/slip test keeps max(κ, 1).
+    const ProcessInfo& info = m.root->GetProcessInfo();
+    EXPECT_LT((ActiveSetUtilities::SlipDirectionTrial(large_turn, info) - Array3(0.6, 0, raised * kPenalty * 1e-3)).norm(),
+              1e-12);
+    EXPECT_LT((ActiveSetUtilities::TrialTangentialTraction(large_turn, info, true) - Array3(0.6, 0, 0.01)).norm(), 1e-15);
+    // Slipping, the node's traction follows the raised direction.
+    const Array3 expected = 0.5 * Array3(0.6, 0, raised * kPenalty * 1e-3).normalized();
+    ActiveSetUtilities::ComputeALMFrictionalActiveSet(*m.root);
+    EXPECT_LT((large_turn.GetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE) - expected).norm(), 1e-12);
+    // A new step starts from max(κ, 1); a 2D model (DOMAIN_SIZE 2) never raises: its directions only flip.
+    ActiveSetUtilities::ResetSlipTrialFactors(*m.contact);
+    EXPECT_EQ(large_turn.GetValue(SLIP_TRIAL_FACTOR), 1.0);
+    m.root->GetProcessInfo().SetValue(DOMAIN_SIZE, 2);
+    large_turn.SetValue(TANGENT_XI, Array3(0, 0, 1));
+    ActiveSetUtilities::ComputeALMFrictionalActiveSet(*m.root);
+    EXPECT_EQ(large_turn.GetValue(SLIP_TRIAL_FACTOR), 1.0);
 }
 
 }  // namespace
