@@ -10,7 +10,9 @@ A second table (issue 18) gives, per run, the linear solver and the fill-reducin
 the share of the linear solve in the total, the CPU seconds of the symbolic analyses (the ordering)
 and of the numeric factorisations with their flop count (independent of the machine's load), the
 largest factors (nnz of L + U and the solver's peak factor memory), the peak resident memory and the
-errors of the contact size (a, or b in 2D) and of p0 against Hertz theory.
+errors of the contact size (a, or b in 2D) and of p0 against Hertz theory. A third table lists, for
+Krylov solvers (``--solver amgcl``), the solves, the Krylov iterations (total, largest, mean per
+solve) and the method.
 
 Usage: ``python benchmarks/hertz_baseline.py [--example E] [--steps N] [--ordering O[,O...]]
 [--solver S[,S...]] [levels ...]`` with E = hertz_2d (default) or hertz_3d, levels 1 2 3 by
@@ -119,6 +121,9 @@ def _measure(
         "symbolic_cpu_s": solver.get("symbolic_seconds", 0.0),
         "numeric_cpu_s": solver.get("numeric_seconds", 0.0),
         "factor_gflop": solver.get("factor_flops", 0.0) / 1e9,
+        # Krylov solvers (solver_type amgcl / gmres): iterations of every solve of the run
+        "krylov_iterations": [int(n) for n in solver.get("krylov_iterations", [])],
+        "krylov_method": solver.get("krylov_method", ""),
         "cpu_s": sum(resource.getrusage(resource.RUSAGE_SELF)[:2]),
         "size_error": getattr(hertz, "a_error", getattr(hertz, "b_error", float("nan"))),
         "p0_error": hertz.p0_error,
@@ -195,7 +200,7 @@ def main(argv: list[str]) -> int:
     )
     for r in rows:
         print(
-            f"{r['level']:>5} {r['dofs_displacement']:>7} {r['linear_solver']:>7} "
+            f"{r['level']:>5} {r['dofs_displacement']:>7} {r['linear_solver'][-30:]:>7} "
             f"{r['ordering']:>8} {r['total_s']:8.2f} "
             f"{r['linear_solve_s']:8.2f} {100 * r['linear_solve_s'] / r['total_s']:5.1f}% "
             f"{r['symbolic_analyses']:>8} {r['symbolic_cpu_s']:7.2f} {r['numeric_cpu_s']:7.2f} "
@@ -203,6 +208,18 @@ def main(argv: list[str]) -> int:
             f"{r['max_factor_memory_mb']:9.0f} {r['peak_rss_mb']:8.0f} "
             f"{100 * r['size_error']:8.4f}% {100 * r['p0_error']:8.4f}%"
         )
+    krylov = [r for r in rows if r.get("krylov_iterations")]
+    if krylov:
+        print(
+            f"\n{'level':>5} {'DoFs':>7} {'solves':>6} {'Krylov its':>10} {'max':>5} "
+            + f"{'mean':>6}  method"
+        )
+        for r in krylov:
+            its = r["krylov_iterations"]
+            print(
+                f"{r['level']:>5} {r['dofs_displacement']:>7} {len(its):>6} {sum(its):>10} "
+                f"{max(its):>5} {sum(its) / len(its):6.1f}  {r['krylov_method']}"
+            )
     path = OUT / f"{example}_baseline.json"
     path.write_text(json.dumps(rows, indent=1) + "\n")
     print(f"written: {path}")

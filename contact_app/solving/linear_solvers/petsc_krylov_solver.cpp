@@ -241,38 +241,41 @@ void PetscKrylovSolver::Solve(SparseMatrixType& rA, SystemVectorType& rX, System
     for (std::size_t k = 0; k < size; ++k)
         if (order[k] >= 0) position[order[k]] = static_cast<int>(k);
 
-    // The renumbered system as CSR, rows sorted, every diagonal present (an explicit zero if need be).
-    std::vector<std::vector<std::pair<int, double>>> rows_of(size);
-    for (int col = 0; col < rA.outerSize(); ++col)
-        for (SparseMatrixType::InnerIterator it(rA, col); it; ++it)
-            rows_of[position[it.row()]].emplace_back(position[col], it.value());
+    // The renumbered system as CSR, rows sorted, every diagonal present (an explicit zero if need be): one
+    // counting pass, then the columns in their new order, so that every row receives its columns sorted.
     std::vector<long> row_start(size + 1, 0);
-    for (std::size_t k = 0; k < size; ++k) {
-        auto& row = rows_of[k];
-        if (order[k] < 0) row.emplace_back(static_cast<int>(k), 1.0);
-        std::sort(row.begin(), row.end());
-        const bool has_diagonal =
-            std::binary_search(row.begin(), row.end(), std::make_pair(static_cast<int>(k), -HUGE_VAL),
-                               [](const auto& a, const auto& b) { return a.first < b.first; });
-        if (!has_diagonal) {
-            row.emplace_back(static_cast<int>(k), 0.0);
-            std::sort(row.begin(), row.end());
+    std::vector<char> has_diagonal(size, 0);
+    for (int col = 0; col < rA.outerSize(); ++col)
+        for (SparseMatrixType::InnerIterator it(rA, col); it; ++it) {
+            const int row = position[it.row()];
+            ++row_start[row + 1];
+            if (row == position[col]) has_diagonal[row] = 1;
         }
-        row_start[k + 1] = row_start[k] + static_cast<long>(row.size());
-    }
+    for (std::size_t k = 0; k < size; ++k)
+        if (!has_diagonal[k]) ++row_start[k + 1];  // padding rows get their 1, the others an explicit 0
+    for (std::size_t k = 0; k < size; ++k) row_start[k + 1] += row_start[k];
+    std::vector<long> fill(row_start.begin(), row_start.end() - 1);
     std::vector<int> columns(row_start[size]);
     std::vector<double> values(row_start[size]);
-    // The preconditioner's matrix: rows whose diagonal vanishes (multipliers left uncondensed: their displacement
-    // is prescribed) get the row's largest entry there; the Krylov method still solves the exact system.
+    for (std::size_t k = 0; k < size; ++k) {
+        const int column = static_cast<int>(k);
+        if (!has_diagonal[k]) {  // rows below k were filled up to column k - 1 only: the diagonal goes here
+            columns[fill[k]] = column;
+            values[fill[k]++] = order[k] < 0 ? 1.0 : 0.0;
+        }
+        if (order[k] < 0) continue;
+        for (SparseMatrixType::InnerIterator it(rA, order[k]); it; ++it) {
+            const long at = fill[position[it.row()]]++;
+            columns[at] = column;
+            values[at] = it.value();
+        }
+    }
     std::vector<std::pair<long, double>> regularised;  // (entry, value in the preconditioner's matrix)
     double diagonal_scale = 0.0;
     for (std::size_t k = 0; k < size; ++k) {
         double largest = 0.0, diagonal = 0.0;
         long diagonal_at = -1;
-        for (std::size_t e = 0; e < rows_of[k].size(); ++e) {
-            const long at = row_start[k] + static_cast<long>(e);
-            columns[at] = rows_of[k][e].first;
-            values[at] = rows_of[k][e].second;
+        for (long at = row_start[k]; at < row_start[k + 1]; ++at) {
             largest = std::max(largest, std::abs(values[at]));
             if (columns[at] == static_cast<int>(k)) {
                 diagonal = values[at];
@@ -281,7 +284,6 @@ void PetscKrylovSolver::Solve(SparseMatrixType& rA, SystemVectorType& rX, System
         }
         diagonal_scale = std::max(diagonal_scale, std::abs(diagonal));
         if (largest > 0.0 && std::abs(diagonal) <= 1.0e-12 * largest) regularised.emplace_back(diagonal_at, largest);
-        rows_of[k] = {};
     }
     std::vector<double> preconditioner_values;
     if (!regularised.empty()) {

@@ -59,6 +59,37 @@ def test_table_rows_and_summary() -> None:
     assert reporter.non_converged_steps() == [2]
 
 
+def test_krylov_column_and_summary_of_an_iterative_solver() -> None:
+    stream = io.StringIO()
+    reporter = Reporter(stream)
+    reporter.begin_loop(0.0, 1.0, 2, krylov_column=True)
+    first, second = _records()
+    first.krylov = [31, 25]
+    second.krylov = list(range(1, 11))  # more than KRYLOV_SHOWN
+    reporter.record_step(first)
+    reporter.record_step(second)
+    reporter.linear_solver = {
+        "solver": "mixed_ulm_linear_solver(petsc)",
+        "krylov": True,
+        "krylov_method": "gmres + gamg, 2 levels",
+        "krylov_iterations": [31, 25, *range(1, 11)],
+        "tolerance": 1e-6,
+        "preconditioner_seconds": 1.5,
+        "krylov_seconds": 2.0,
+        "near_null_space": 6,
+    }
+    reporter.finish()
+    lines = stream.getvalue().splitlines()
+    assert lines[0].endswith("krylov its")
+    assert lines[1].endswith("  31 25")
+    assert lines[2].endswith("  1 2 3 4 5 6 7 8 ...")
+    assert (
+        "linear solver: mixed_ulm_linear_solver(petsc), gmres + gamg, 2 levels: 12 solves, 111 "
+        "iterations (max 31, mean 9.2) to a relative residual of 1e-06, set-up 1.5 s, iterations "
+        "2 s, 6 rigid-body modes"
+    ) in stream.getvalue()
+
+
 def test_progress_bar_on_a_terminal_with_several_steps() -> None:
     stream = _Terminal()
     reporter = Reporter(stream)

@@ -260,6 +260,8 @@ private:
             PLUGIN_CALL(PCMGGetLevels(pc, &levels));
             result.levels = static_cast<int>(levels);
         }
+        mLastSize = n;
+        mLastRegularised = separate_preconditioner;
         std::string description = std::string(ksp_type) + " + " + pc_type;
         if (result.levels > 0) description += ", " + std::to_string(result.levels) + " levels";
         if (mRanks > 1) description += ", " + std::to_string(mRanks) + " MPI ranks";
@@ -271,9 +273,11 @@ private:
         MPI_Allgatherv(local_x, static_cast<int>(local), MPI_DOUBLE, x, counts.data(), offsets.data(), MPI_DOUBLE, comm);
         PLUGIN_CALL(VecRestoreArrayRead(solution, &local_x));
         if (mOptions.verbosity > 0 && mRank == 0)
-            std::printf("petsc: %s, %d iterations, relative residual %.3e (%s), set-up %.3f s, solve %.3f s\n",
-                        result.description, result.iterations, result.relative_residual, result.reason,
-                        result.setup_seconds, result.solve_seconds);
+            std::printf("petsc: %s, %ld equations%s, %d iterations, relative residual %.3e (%s), set-up %.3f s, "
+                        "solve %.3f s\n",
+                        result.description, mLastSize, mLastRegularised ? " (zero diagonals regularised)" : "",
+                        result.iterations, result.relative_residual, result.reason, result.setup_seconds,
+                        result.solve_seconds);
         return 0;
     }
 
@@ -352,6 +356,8 @@ private:
 
     Options mOptions;
     double mShift = 0.0;
+    long mLastSize = 0;
+    bool mLastRegularised = false;
     std::string mKrylov, mPreconditioner, mSmoother, mExtra;
     int mRank = 0, mRanks = 1;
 };
