@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_strategies/mortar_convergence_criteria.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -45,6 +46,13 @@ const char* FamilyName(BaseMortarConvergenceCriteria::Family family) {
         default:
             return "MeshTyingMortarConvergenceCriteria";
     }
+}
+
+/// max |Δu| of the last correction: a penalty node that opened by less is held (docs/theory/active_set.md §2).
+double LargestCorrection(const SystemVectorType& rDx) {
+    double largest = 0.0;
+    for (std::size_t i = 0; i < static_cast<std::size_t>(rDx.size()); ++i) largest = std::max(largest, std::abs(rDx[i]));
+    return largest;
 }
 
 }  // namespace
@@ -140,7 +148,7 @@ void BaseMortarConvergenceCriteria::CountSets(ModelPart& rModelPart) {
 }
 
 bool BaseMortarConvergenceCriteria::PostCriteria(ModelPart& rModelPart, DofsArrayType&, const SparseMatrixType&,
-                                                 const SystemVectorType&, const SystemVectorType&,
+                                                 const SystemVectorType& rDx, const SystemVectorType&,
                                                  const BuilderAndSolver&) {
     mActiveFlips = mSlipFlips = 0;
     ProcessInfo& info = rModelPart.GetProcessInfo();
@@ -163,7 +171,7 @@ bool BaseMortarConvergenceCriteria::PostCriteria(ModelPart& rModelPart, DofsArra
             mActiveFlips = ActiveSetUtilities::ComputeALMFrictionlessComponentsActiveSet(owner);
             break;
         case Family::PENALTY_FRICTIONLESS:
-            mActiveFlips = ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet(owner);
+            mActiveFlips = ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet(owner, LargestCorrection(rDx));
             break;
         case Family::ALM_FRICTIONAL: {
             const auto flips = ActiveSetUtilities::ComputeALMFrictionalActiveSet(owner, mPureSlip);
@@ -172,7 +180,8 @@ bool BaseMortarConvergenceCriteria::PostCriteria(ModelPart& rModelPart, DofsArra
             break;
         }
         case Family::PENALTY_FRICTIONAL: {
-            const auto flips = ActiveSetUtilities::ComputePenaltyFrictionalActiveSet(owner, mPureSlip);
+            const auto flips =
+                ActiveSetUtilities::ComputePenaltyFrictionalActiveSet(owner, mPureSlip, LargestCorrection(rDx));
             mActiveFlips = flips[0];
             mSlipFlips = flips[1];
             break;

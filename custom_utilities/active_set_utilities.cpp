@@ -73,9 +73,32 @@ Array3 Direction(const Array3& v) {
     return norm > 0.0 ? Array3(v / norm) : Array3(Array3::Zero());
 }
 
+/// The mean gap G_j / A_j of a slave node (G_j where it has no NODAL_AREA): the length its weighted gap averages.
+double MeanGap(Node& node) {
+    const double gap = NodalValue(node, WEIGHTED_GAP);
+    const double area = node.Has(NODAL_AREA) ? node.GetValue(NODAL_AREA) : 0.0;
+    return area > 0.0 ? gap / area : gap;
+}
+
+/// Whether a penalty node is active after the update, and the changes it counts (docs/theory/active_set.md §2):
+/// active iff λ̄ = ε η G < 0, except that an ACTIVE node whose mean gap opened by less than @p release_gap (the
+/// largest displacement correction of the iterate) stays: its opening is below the motion of the iterate itself.
+/// Such a held node is open, so it counts as a change and Newton cannot stop on it; once the corrections fall below
+/// its opening it leaves.
+struct PenaltyActivity {
+    bool active;
+    std::size_t changes;
+};
+PenaltyActivity UpdatePenaltyActive(Node& node, double augmented_normal, double release_gap) {
+    const bool covered = Covered(node);
+    if (augmented_normal < 0.0 && covered) return {true, UpdateActive(node, true)};
+    if (covered && node.Is(ACTIVE) && MeanGap(node) < release_gap) return {true, 1};
+    return {false, UpdateActive(node, false)};
+}
+
 }  // namespace
 
-std::size_t ComputePenaltyFrictionlessActiveSet(ModelPart& model_part) {
+std::size_t ComputePenaltyFrictionlessActiveSet(ModelPart& model_part, double release_gap) {
     const ProcessInfo& process_info = model_part.GetProcessInfo();
     std::size_t flips = 0;
     for (Node* node : SlaveNodesToUpdate(model_part)) {
@@ -83,7 +106,7 @@ std::size_t ComputePenaltyFrictionlessActiveSet(ModelPart& model_part) {
         // §7 "Nodal penalty").
         const double augmented_normal = Penalty(*node, process_info) * ContactUtilities::PenaltyWeightedGap(*node);
         node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, augmented_normal);
-        flips += UpdateActive(*node, augmented_normal < 0.0 && Covered(*node));
+        flips += UpdatePenaltyActive(*node, augmented_normal, release_gap).changes;
     }
     return flips;
 }
@@ -226,7 +249,8 @@ Array3 SlipDirectionTrial(const Node& node, const ProcessInfo& process_info) {
     return TangentialTrial(node, process_info, true, SlipTrialFactor(node, process_info));
 }
 
-std::array<std::size_t, 2> ComputePenaltyFrictionalActiveSet(ModelPart& model_part, bool pure_slip) {
+std::array<std::size_t, 2> ComputePenaltyFrictionalActiveSet(ModelPart& model_part, bool pure_slip,
+                                                             double release_gap) {
     const ProcessInfo& process_info = model_part.GetProcessInfo();
     std::array<std::size_t, 2> flips{0, 0};
     const std::vector<Node*> nodes = SlaveNodesToUpdate(model_part);
@@ -237,8 +261,9 @@ std::array<std::size_t, 2> ComputePenaltyFrictionalActiveSet(ModelPart& model_pa
         const double penalty = Penalty(*node, process_info);
         const double transmitted_normal = penalty * ContactUtilities::PenaltyWeightedGap(*node);
         node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, transmitted_normal);
-        const bool active = transmitted_normal < 0.0 && Covered(*node);
-        flips[0] += UpdateActive(*node, active);
+        const PenaltyActivity activity = UpdatePenaltyActive(*node, transmitted_normal, release_gap);
+        const bool active = activity.active;
+        flips[0] += activity.changes;
         if (!active) {  // the deactivation is the counted change; the stick/slip state is just reset
             NodalValue(*node, WEIGHTED_SLIP).setZero();
             node->SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE, Array3(Array3::Zero()));

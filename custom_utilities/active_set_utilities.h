@@ -61,8 +61,10 @@ Array3 TrialTangentialTraction(const Node& node, const ProcessInfo& process_info
 /// SlipTrialFactor(node) ε. At a converged slip state kPλ ∥ Pũτ, so it points as the test's trial does.
 Array3 SlipDirectionTrial(const Node& node, const ProcessInfo& process_info);
 
-/// @brief λ̄n = ε g̃; ACTIVE ⇔ λ̄n < 0. @return the number of nodes whose ACTIVE flag changed
-std::size_t ComputePenaltyFrictionlessActiveSet(ModelPart& model_part);
+/// @brief λ̄n = ε η G; ACTIVE ⇔ λ̄n < 0, or the node was ACTIVE and its mean gap G/A opened by less than
+///        @p release_gap (the largest displacement correction of the iterate; 0: no hold), which counts as a change
+///        (docs/theory/active_set.md §2). @return the number of ACTIVE flips and held open nodes
+std::size_t ComputePenaltyFrictionlessActiveSet(ModelPart& model_part, double release_gap = 0.0);
 /// @brief λ̄n = k λ + ε g̃ (λ = LAGRANGE_MULTIPLIER_CONTACT_PRESSURE); on activation λ := λ̄n / k.
 /// @return the number of ACTIVE flips
 std::size_t ComputeALMFrictionlessActiveSet(ModelPart& model_part);
@@ -71,8 +73,10 @@ std::size_t ComputeALMFrictionlessActiveSet(ModelPart& model_part);
 std::size_t ComputeALMFrictionlessComponentsActiveSet(ModelPart& model_part);
 /// @brief Penalty frictional: λ̄n = ε g̃; active nodes: λ̄τ = κ ε P(ũτ + e), stick ⇔ |λ̄τ| ≤ −μ λ̄n, slip traction
 ///        −μ λ̄n λ̄τ/|λ̄τ|; inactive nodes: ũτ := 0, SLIP reset. @param[in] pure_slip every active node slips
-/// @return {ACTIVE flips, SLIP flips} (slip flips are not counted in pure slip)
-std::array<std::size_t, 2> ComputePenaltyFrictionalActiveSet(ModelPart& model_part, bool pure_slip = false);
+///        The normal set is the frictionless one with @p release_gap.
+/// @return {ACTIVE flips and held open nodes, SLIP flips} (slip flips are not counted in pure slip)
+std::array<std::size_t, 2> ComputePenaltyFrictionalActiveSet(ModelPart& model_part, bool pure_slip = false,
+                                                             double release_gap = 0.0);
 /// @brief ALM frictional: λ̄n = k n·λ + ε g̃, λ̄τ = k Pλ + κ ε ũτ; on activation λ := n λ̄n/k + λ̄τ/k (λ̄τ dropped
 ///        when μ < machine ε); slip ⇔ μ < machine ε (a frictionless node cannot stick) or |λ̄τ| / (−μ λ̄n) >
 ///        1 − SLIP_THRESHOLD (slipping node) or > 1 (sticking node); slip traction −μ λ̄n λ̄τ/|λ̄τ|; inactive nodes:

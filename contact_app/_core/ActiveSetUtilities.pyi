@@ -17,11 +17,11 @@ def ComputeALMFrictionlessComponentsActiveSet(model_part: contact_app._core.Mode
     """
     Number of ACTIVE flips.
     """
-def ComputePenaltyFrictionalActiveSet(model_part: contact_app._core.ModelPart, pure_slip: bool = False) -> typing.Annotated[list[int], "FixedSize(2)"]:
+def ComputePenaltyFrictionalActiveSet(model_part: contact_app._core.ModelPart, pure_slip: bool = False, release_gap: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> typing.Annotated[list[int], "FixedSize(2)"]:
     """
-    [ACTIVE flips, SLIP flips].
+    [ACTIVE flips and held open nodes, SLIP flips].
     """
-def ComputePenaltyFrictionlessActiveSet(model_part: contact_app._core.ModelPart) -> int:
+def ComputePenaltyFrictionlessActiveSet(model_part: contact_app._core.ModelPart, release_gap: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> int:
     """
-    Number of ACTIVE flips.
+    Number of ACTIVE flips and held open nodes (release_gap: docs/theory/active_set.md section 2).
     """

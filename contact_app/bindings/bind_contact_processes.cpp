@@ -56,14 +56,16 @@ void BindContactUtilities(py::module_& m) {
 void BindActiveSetUtilities(py::module_& m) {
     auto active_set = m.def_submodule("ActiveSetUtilities", "Semi-smooth Newton active-set and stick/slip updates.");
     active_set.def("ComputePenaltyFrictionlessActiveSet", &ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet,
-                   py::arg("model_part"), "Number of ACTIVE flips.");
+                   py::arg("model_part"), py::arg("release_gap") = 0.0,
+                   "Number of ACTIVE flips and held open nodes (release_gap: docs/theory/active_set.md section 2).");
     active_set.def("ComputeALMFrictionlessActiveSet", &ActiveSetUtilities::ComputeALMFrictionlessActiveSet,
                    py::arg("model_part"), "Number of ACTIVE flips.");
     active_set.def("ComputeALMFrictionlessComponentsActiveSet",
                    &ActiveSetUtilities::ComputeALMFrictionlessComponentsActiveSet, py::arg("model_part"),
                    "Number of ACTIVE flips.");
     active_set.def("ComputePenaltyFrictionalActiveSet", &ActiveSetUtilities::ComputePenaltyFrictionalActiveSet,
-                   py::arg("model_part"), py::arg("pure_slip") = false, "[ACTIVE flips, SLIP flips].");
+                   py::arg("model_part"), py::arg("pure_slip") = false, py::arg("release_gap") = 0.0,
+                   "[ACTIVE flips and held open nodes, SLIP flips].");
     active_set.def("ComputeALMFrictionalActiveSet", &ActiveSetUtilities::ComputeALMFrictionalActiveSet,
                    py::arg("model_part"), py::arg("pure_slip") = false, "[ACTIVE flips, SLIP flips].");
 }

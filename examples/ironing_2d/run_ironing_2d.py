@@ -14,8 +14,9 @@ difference |F - F_oracle| / max |Fy_oracle| of Fx and Fy (scaled by the pressing
 the problem's forces). Steady sliding is the second half of the slide (t >= 2.5): there Fx/Fy is
 compared with mu.
 
-``--variant`` (``alm``, default; ``penalty``; ``alm_frictionless``) changes the mortar type, the
-contact process and the contact type only, as the oracle driver does. Writes
+``--variant`` (``alm``, default; ``penalty``; ``alm_frictionless``; ``penalty_frictionless``)
+changes the mortar type, the contact process and the contact type only, as the oracle driver does;
+``--end-time`` shortens the history. Writes
 ``ironing_2d_reactions.png`` and ``ironing_2d_summary.txt``; exit code 0 when every step converged.
 """
 
@@ -65,6 +66,11 @@ VARIANTS = {
         "process": "alm",
         "contact": "Frictionless",
     },
+    "penalty_frictionless": {
+        "mortar": "PenaltyContactFrictionless",
+        "process": "penalty",
+        "contact": "Frictionless",
+    },
 }
 
 
@@ -82,6 +88,10 @@ class Step:
     active: int
     slip: int
     coulomb: float  # max | |q|/(mu p) - 1 | over the slipping nodes (nan if none)
+    #: Slave nodes whose ACTIVE flag disagrees with their weighted gap G (ACTIVE with G >= 0, or
+    #: inactive with G < 0 while a pair covers them): 0 in a converged penalty state (the ALM
+    #: decides with k lambda + eps G and ends at G = 0 up to round-off).
+    set_mismatches: int = 0
 
 
 @dataclass
@@ -158,6 +168,17 @@ def coulomb_deviation(main: ca.ModelPart, mu: float) -> float:
     return deviation
 
 
+def set_mismatches(main: ca.ModelPart) -> int:
+    """Slave nodes ACTIVE with G >= 0, or inactive, covered and G < 0 (G = WEIGHTED_GAP)."""
+    count = 0
+    for node in main.GetSubModelPart("Contact_Slave").Nodes:
+        gap = node.GetSolutionStepValue(ca.WEIGHTED_GAP)
+        covered = node.GetValue(ca.NODAL_AREA) > 0.0
+        if node.Is(ca.ACTIVE) != (gap < 0.0 and covered):
+            count += 1
+    return count
+
+
 def record_step(main: ca.ModelPart, record, mu: float) -> Step:
     """The state of ``main`` after the step ``record`` (a reporter's StepRecord)."""
     top = main.GetSubModelPart("DISPLACEMENT_die_top")
@@ -174,6 +195,7 @@ def record_step(main: ca.ModelPart, record, mu: float) -> Step:
         active=sum(n.Is(ca.ACTIVE) for n in slave),
         slip=sum(n.Is(ca.ACTIVE) and n.Is(ca.SLIP) for n in slave),
         coulomb=coulomb_deviation(main, mu) if mu > 0.0 else math.nan,
+        set_mismatches=set_mismatches(main),
     )
 
 
@@ -361,9 +383,12 @@ def main(argv: list[str] | None = None) -> int:
     )
     parser.add_argument("--variant", default="alm", choices=sorted(VARIANTS))
     parser.add_argument("--quiet", action="store_true", help="no step table")
+    parser.add_argument(
+        "--end-time", type=float, help="stop at this time (default: the whole history, 4.5)"
+    )
     args = parser.parse_args(argv)
     workdir = Path.cwd()
-    result = run(workdir, args.refinement, args.variant, quiet=args.quiet)
+    result = run(workdir, args.refinement, args.variant, args.end_time, quiet=args.quiet)
     print(write_outputs(result, workdir))
     print(f"outputs: {workdir / PLOT}, {workdir / SUMMARY}")
     return 0 if result.converged else 1

@@ -180,6 +180,48 @@ TEST(ActiveSetUtilities, test_penalty_frictional_stick_slip_with_consistent_orie
     EXPECT_LT((stick.GetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE) - Array3(0.5, 0, 0)).norm(), 1e-15);
 }
 
+TEST(ActiveSetUtilities, test_penalty_node_opening_within_the_iterate_motion_is_held_and_counted) {
+    // release_gap = 1e-3 (the largest correction of the iterate); mean gaps G/A with A = 0.5, λ̄ = ε G (η = 1).
+    ActiveSetModel m;
+    Node& held = m.Add(2e-4, true);        // opened by 4e-4 < 1e-3: stays ACTIVE, counted
+    Node& released = m.Add(1e-3, true);    // opened by 2e-3 > 1e-3: leaves
+    Node& closed = m.Add(2e-4, false);     // open and inactive: stays out (the hold only keeps)
+    Node& entering = m.Add(-1e-4, false);  // penetrating: enters
+    Node& pressed = m.Add(-1e-4, true);    // penetrating and active: no change
+    for (Node* node : {&held, &released, &closed, &entering, &pressed}) {
+        node->SetValue(NODAL_AREA, 0.5);
+        node->SetValue(SQUARED_PAIR_AREA, 0.25);  // one pair: η = 1
+    }
+    EXPECT_EQ(ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet(*m.root, 1e-3), 3u);
+    EXPECT_TRUE(held.Is(ACTIVE));
+    EXPECT_FALSE(released.Is(ACTIVE));
+    EXPECT_FALSE(closed.Is(ACTIVE));
+    EXPECT_TRUE(entering.Is(ACTIVE) && pressed.Is(ACTIVE));
+    EXPECT_DOUBLE_EQ(held.GetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE), kPenalty * 2e-4);  // the tension it pulls with
+    // The held node keeps counting while it is open: the set cannot converge with an active node open. Once the
+    // corrections fall below its opening it leaves; a converged set has G < 0 on every ACTIVE node, G >= 0 elsewhere.
+    EXPECT_EQ(ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet(*m.root, 1e-3), 1u);
+    EXPECT_TRUE(held.Is(ACTIVE));
+    EXPECT_EQ(ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet(*m.root, 1e-5), 1u);
+    EXPECT_FALSE(held.Is(ACTIVE));
+    EXPECT_EQ(ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet(*m.root, 1e-5), 0u);
+    for (Node* node : {&held, &released, &closed, &entering, &pressed})
+        EXPECT_EQ(node->Is(ACTIVE), node->FastGetSolutionStepValue(WEIGHTED_GAP) < 0.0);
+    // Without a release gap (the default) an open node leaves at once, as before.
+    held.Set(ACTIVE, true);
+    EXPECT_EQ(ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet(*m.root), 1u);
+    EXPECT_FALSE(held.Is(ACTIVE));
+    // Frictional: the same normal rule; a held node has no compression, so it slips with its (small) bound.
+    held.Set(ACTIVE, true);
+    held.SetValue(FRICTION_COEFFICIENT, 0.5);
+    held.FastGetSolutionStepValue(WEIGHTED_SLIP) = Array3(0.01, 0, 0);
+    const auto flips = ActiveSetUtilities::ComputePenaltyFrictionalActiveSet(*m.root, false, 1e-3);
+    EXPECT_EQ(flips[0], 1u);
+    EXPECT_TRUE(held.Is(ACTIVE) && held.Is(SLIP));
+    EXPECT_EQ(ActiveSetUtilities::ComputePenaltyFrictionalActiveSet(*m.root, false, 1e-5)[0], 1u);
+    EXPECT_FALSE(held.Is(ACTIVE) || held.Is(SLIP));
+}
+
 TEST(ActiveSetUtilities, test_alm_frictional_hysteresis_augmentation_and_activation) {
     ActiveSetModel m;
     ProcessInfo& info = m.root->GetProcessInfo();

@@ -164,35 +164,74 @@ def test_frictionless_history_against_the_oracle(tmp_path: Path) -> None:
     assert dfx < 0.02
 
 
+def _assert_penalty_history(result, iterations: int) -> None:
+    """The whole history, no step cut, every converged set consistent with its gaps."""
+    # A cut step would add its sub-steps to the history (measured before the penalty's release
+    # rule, docs/theory/active_set.md section 2: 77 of 80 sliding steps cut, 2385 rows).
+    assert result.converged and len(result.steps) == 90
+    times = np.array([s.time for s in result.steps])
+    assert np.allclose(times, 0.05 * np.arange(1, 91))
+    pressing = [step for step in result.steps if step.time <= 0.5 + 1e-9]
+    assert max(step.iterations for step in pressing) <= 5
+    assert max(s.iterations for s in result.steps) <= iterations
+    for step in result.steps:
+        # A converged penalty set: G < 0 on every active node, G >= 0 on every inactive one.
+        assert step.set_mismatches == 0
+        assert abs(step.fx + step.base_fx) < 1e-6 * step.fy
+        assert abs(step.fy - step.base_fy) < 1e-6 * step.fy
+
+
 @pytest.mark.slow
 def test_penalty_frictional_presses_like_the_alm_and_slides(tmp_path: Path) -> None:
-    """The penalty variant to t = 1.0: the pressing phase and the first ten sliding steps.
+    """The penalty variant over the whole history (4.5 s of model time, about 12 s).
 
     Before the nodal penalty (docs/theory/mortar.md section 7) the pairs of a node on the curved,
     non-matching die pushed and pulled it with their own partial gaps and pressing steps 1, 2,
-    3 and 6 stopped at 30 iterations. Now every pressing step converges in 4 iterations and the
+    3 and 6 stopped at 30 iterations. Now every pressing step converges in 4-5 iterations and the
     pressing forces are those of the ALM oracle (Kratos 10.4.4; the reference's own penalty
     gives an Fy 10 % lower at t = 0.05 and stops at t = 0.1): measured 1.1e-3 (Fy) and 1.3e-3
     (Fx) of the largest pressing force, the penetration of the penalty (1.1e-4 of the 0.2
-    pressing) included. The sliding steps are cut (a Newton iterate inverts a slab element) and
-    their sub-steps converge in up to 8 iterations; the whole 4.5 s history runs to the end the
-    same way (4 minutes, steady Fx/Fy = 0.3067 against the ALM's 0.3069).
+    pressing) included. Before the release rule of docs/theory/active_set.md section 2 the
+    penalty set released nodes that a Newton iterate opened by 1e-6, the freed slab sprang into
+    the die and 77 of the 80 sliding steps were cut (2385 sub-steps, 17623 iterations, 300 s);
+    now none is: measured 840 iterations, 3-14 per step, steady Fx/Fy = 0.3067 (ALM 0.3069).
     """
     _copy_inputs(tmp_path)
     module = _example_module()
-    result = module.run(tmp_path, variant="penalty", end_time=1.0)
-    assert result.converged and result.steps[-1].time == pytest.approx(1.0)
-    pressing = [step for step in result.steps if step.time <= 0.5 + 1e-9]
-    assert len(pressing) == 10 and max(step.iterations for step in pressing) <= 5
+    result = module.run(tmp_path, variant="penalty")
+    print(module.summary(result))
+    _assert_penalty_history(result, iterations=16)
     oracle = module.load_oracle("alm")
     reference = {round(h["time"], 9): h for h in oracle["history"]}
     scale = max(abs(h["die_reaction_y"]) for h in oracle["history"])
-    for step in pressing:
+    for step in result.steps:
+        if step.time > 0.5 + 1e-9:
+            break
         alm = reference[round(step.time, 9)]
         assert abs(step.fy + alm["die_reaction_y"]) < PRESSING_TOLERANCE * scale
         assert abs(step.fx - alm["die_reaction_x"]) < PRESSING_TOLERANCE * scale
-    for step in result.steps:
-        assert abs(step.fx + step.base_fx) < 1e-6 * step.fy
-        if step.slip > 0:
-            assert step.coulomb < 1e-9
-    assert result.steps[-1].slip == result.steps[-1].active > 0
+    for step in result.steady:
+        assert step.slip == step.active > 0
+        assert step.coulomb < 1e-9
+    # The ALM's steady ratio (test above) is 0.3069; the penalty's 0.3067.
+    mean, low, high = result.steady_ratio
+    assert mean == pytest.approx(0.3069, abs=1e-3)
+    assert high - low < 1e-3
+
+
+@pytest.mark.slow
+def test_penalty_frictionless_history_against_the_oracle(tmp_path: Path) -> None:
+    """The frictionless penalty over the whole history against the frictionless ALM oracle.
+
+    Measured: 90 steps, none cut, 551 iterations (4-9 per step); max |dFy| = 1.5e-3 of the
+    largest oracle force (ours, ALM: 1.1e-3; the penalty's penetration adds the rest).
+    """
+    _copy_inputs(tmp_path)
+    module = _example_module()
+    result = module.run(tmp_path, variant="penalty_frictionless")
+    print(module.summary(result))
+    _assert_penalty_history(result, iterations=12)
+    assert all(step.slip == 0 for step in result.steps)
+    result.oracle = module.load_oracle("alm_frictionless")
+    compared, _, dfy = result.oracle_difference()
+    assert compared == 90 and dfy < 3e-3
