@@ -11,29 +11,23 @@ solver distributes rank 0's system over the ranks and gives every rank the solut
 
 from __future__ import annotations
 
-import importlib.util
-import io
 import json
 import sys
 from pathlib import Path
 from typing import Any
 
+from example_runs import load_make_mesh, run_without_output  # same folder
+
 import contact_app as ca
-from contact_app.analysis import Reporter
-from contact_app.parameters import Parameters
 
 HERTZ_3D = Path(__file__).resolve().parents[3] / "examples" / "hertz_3d"
 
 
 def run(directory: Path, solver_type: str, mortar_type: str | None = None) -> tuple[Any, str]:
     """Run the case in ``directory``; return the analysis and its printed table."""
-    spec = importlib.util.spec_from_file_location("hertz_3d_make_mesh", HERTZ_3D / "make_mesh.py")
-    assert spec is not None and spec.loader is not None
-    make_mesh = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(make_mesh)
     mesh = directory / "hertz_3d.msh"
     if not mesh.exists():
-        make_mesh.write_mesh(mesh, 1)
+        load_make_mesh(HERTZ_3D).write_mesh(mesh, 1)
     parameters = json.loads((HERTZ_3D / "ProjectParameters.json").read_text())
     solver = parameters["solver_settings"]
     solver["model_import_settings"]["input_filename"] = str(mesh)
@@ -43,13 +37,7 @@ def run(directory: Path, solver_type: str, mortar_type: str | None = None) -> tu
         solver["linear_solver_settings"]["tolerance"] = 1.0e-10
     if mortar_type is not None:
         solver["contact_settings"]["mortar_type"] = mortar_type
-    parameters.pop("output_processes", None)
-    stream = io.StringIO()
-    analysis = ca.analysis.StructuralMechanicsAnalysis(
-        ca.Model(), Parameters(parameters), reporter=Reporter(stream)
-    )
-    analysis.Run()
-    return analysis, stream.getvalue()
+    return run_without_output(parameters)
 
 
 def displacements(analysis: Any) -> dict[int, list[float]]:

@@ -6,17 +6,15 @@ case, and the linear-solver line of the run summary.
 
 from __future__ import annotations
 
-import importlib.util
-import io
 import json
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 import pytest
+from example_runs import load_make_mesh, run_without_output  # same folder (pytest rootdir)
 
 import contact_app as ca
-from contact_app.analysis import Reporter
 from contact_app.analysis.solvers import StaticMechanicalSolver
 from contact_app.parameters import Parameters
 
@@ -66,11 +64,7 @@ def _run_hertz_2d(
     directory: Path, ordering: str, echo_level: int = 0, solver_type: str | None = None
 ) -> tuple[Any, str]:
     """The hertz_2d example at its coarsest level, without output, with the given ordering."""
-    spec = importlib.util.spec_from_file_location("hertz_2d_make_mesh", HERTZ_2D / "make_mesh.py")
-    make_mesh = importlib.util.module_from_spec(spec)
-    assert spec.loader is not None
-    spec.loader.exec_module(make_mesh)
-    make_mesh.write_mesh(directory / "hertz_2d.msh", 1)
+    load_make_mesh(HERTZ_2D).write_mesh(directory / "hertz_2d.msh", 1)
     parameters = json.loads((HERTZ_2D / "ProjectParameters.json").read_text())
     parameters["problem_data"]["echo_level"] = echo_level
     parameters["solver_settings"]["model_import_settings"]["input_filename"] = str(
@@ -82,13 +76,7 @@ def _run_hertz_2d(
     parameters["solver_settings"]["linear_solver_settings"]["ordering"] = ordering
     if solver_type is not None:
         parameters["solver_settings"]["linear_solver_settings"]["solver_type"] = solver_type
-    parameters.pop("output_processes", None)
-    stream = io.StringIO()
-    analysis = ca.analysis.StructuralMechanicsAnalysis(
-        ca.Model(), Parameters(parameters), reporter=Reporter(stream)
-    )
-    analysis.Run()
-    return analysis, stream.getvalue()
+    return run_without_output(parameters)
 
 
 def _state(analysis: Any) -> tuple[np.ndarray, np.ndarray]:

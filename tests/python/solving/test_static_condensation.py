@@ -8,23 +8,20 @@ ran; "auto" refuses a finite-strain or hyperelastic model with the reason.
 
 from __future__ import annotations
 
-import importlib.util
-import io
 import json
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 import pytest
+from example_runs import load_make_mesh, run_without_output  # same folder
 from test_direct_solver_ordering import (
     _state,
     _static_solver,
 )  # same folder (pytest's rootdir import)
 
 import contact_app as ca
-from contact_app.analysis import Reporter
 from contact_app.analysis.reporting import condensation_text
-from contact_app.parameters import Parameters
 
 EXAMPLES = Path(__file__).parents[3] / "examples"
 
@@ -54,12 +51,8 @@ def _run(
 ) -> tuple[Any, str]:
     """An example at its coarsest level, without output, with static_condensation set."""
     folder = EXAMPLES / example
-    spec = importlib.util.spec_from_file_location(f"{example}_make_mesh", folder / "make_mesh.py")
-    assert spec is not None and spec.loader is not None
-    make_mesh = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(make_mesh)
     mesh = directory / f"{example}.msh"
-    make_mesh.write_mesh(mesh, 1)
+    load_make_mesh(folder).write_mesh(mesh, 1)
     parameters = json.loads((folder / "ProjectParameters.json").read_text())
     solver = parameters["solver_settings"]
     solver["model_import_settings"]["input_filename"] = str(mesh)
@@ -78,13 +71,7 @@ def _run(
         mapping = solver["model_import_settings"]["mesh_mapping"]["elements"]
         for cell in mapping:
             mapping[cell] = element
-    parameters.pop("output_processes", None)
-    stream = io.StringIO()
-    analysis = ca.analysis.StructuralMechanicsAnalysis(
-        ca.Model(), Parameters(parameters), reporter=Reporter(stream)
-    )
-    analysis.Run()
-    return analysis, stream.getvalue()
+    return run_without_output(parameters)
 
 
 def _summary_line(text: str) -> str:
