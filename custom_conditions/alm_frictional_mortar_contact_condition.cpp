@@ -177,17 +177,7 @@ Condition::Pointer AugmentedLagrangianMethodFrictionalMortarContactAxisymConditi
 #undef ALMF_TEMPLATE
 #undef ALMF_CLASS
 
-template class AugmentedLagrangianMethodFrictionalMortarContactCondition<2, 2, false, 2>;
-template class AugmentedLagrangianMethodFrictionalMortarContactCondition<2, 2, true, 2>;
-template class AugmentedLagrangianMethodFrictionalMortarContactCondition<3, 3, false, 3>;
-template class AugmentedLagrangianMethodFrictionalMortarContactCondition<3, 3, true, 3>;
-template class AugmentedLagrangianMethodFrictionalMortarContactCondition<3, 4, false, 4>;
-template class AugmentedLagrangianMethodFrictionalMortarContactCondition<3, 4, true, 4>;
-template class AugmentedLagrangianMethodFrictionalMortarContactCondition<3, 3, false, 4>;
-template class AugmentedLagrangianMethodFrictionalMortarContactCondition<3, 3, true, 4>;
-template class AugmentedLagrangianMethodFrictionalMortarContactCondition<3, 4, false, 3>;
-template class AugmentedLagrangianMethodFrictionalMortarContactCondition<3, 4, true, 3>;
-template class AugmentedLagrangianMethodFrictionalMortarContactAxisymCondition<2, false>;
-template class AugmentedLagrangianMethodFrictionalMortarContactAxisymCondition<2, true>;
+CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(AugmentedLagrangianMethodFrictionalMortarContactCondition)
+CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(AugmentedLagrangianMethodFrictionalMortarContactAxisymCondition)
 
 }  // namespace contact_app

@@ -104,15 +104,6 @@ void ALMC_CLASS::AddResidual(const State<ADScalar>& state, const ProcessInfo& rC
 #undef ALMC_TEMPLATE
 #undef ALMC_CLASS
 
-template class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<2, 2, false, 2>;
-template class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<2, 2, true, 2>;
-template class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<3, 3, false, 3>;
-template class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<3, 3, true, 3>;
-template class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<3, 4, false, 4>;
-template class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<3, 4, true, 4>;
-template class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<3, 3, false, 4>;
-template class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<3, 3, true, 4>;
-template class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<3, 4, false, 3>;
-template class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<3, 4, true, 3>;
+CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition)
 
 }  // namespace contact_app

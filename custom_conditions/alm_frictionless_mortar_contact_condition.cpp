@@ -107,17 +107,7 @@ Condition::Pointer AugmentedLagrangianMethodFrictionlessMortarContactAxisymCondi
 #undef ALM_TEMPLATE
 #undef ALM_CLASS
 
-template class AugmentedLagrangianMethodFrictionlessMortarContactCondition<2, 2, false, 2>;
-template class AugmentedLagrangianMethodFrictionlessMortarContactCondition<2, 2, true, 2>;
-template class AugmentedLagrangianMethodFrictionlessMortarContactCondition<3, 3, false, 3>;
-template class AugmentedLagrangianMethodFrictionlessMortarContactCondition<3, 3, true, 3>;
-template class AugmentedLagrangianMethodFrictionlessMortarContactCondition<3, 4, false, 4>;
-template class AugmentedLagrangianMethodFrictionlessMortarContactCondition<3, 4, true, 4>;
-template class AugmentedLagrangianMethodFrictionlessMortarContactCondition<3, 3, false, 4>;
-template class AugmentedLagrangianMethodFrictionlessMortarContactCondition<3, 3, true, 4>;
-template class AugmentedLagrangianMethodFrictionlessMortarContactCondition<3, 4, false, 3>;
-template class AugmentedLagrangianMethodFrictionlessMortarContactCondition<3, 4, true, 3>;
-template class AugmentedLagrangianMethodFrictionlessMortarContactAxisymCondition<2, false>;
-template class AugmentedLagrangianMethodFrictionlessMortarContactAxisymCondition<2, true>;
+CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(AugmentedLagrangianMethodFrictionlessMortarContactCondition)
+CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(AugmentedLagrangianMethodFrictionlessMortarContactAxisymCondition)
 
 }  // namespace contact_app

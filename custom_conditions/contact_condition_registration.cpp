@@ -3,6 +3,8 @@
 #include "custom_conditions/contact_condition_registration.h"
 
 #include <memory>
+#include <string>
+#include <tuple>
 #include <utility>
 
 #include "contact_app/kernel/geometries/geometry_factory.h"
@@ -19,12 +21,19 @@ namespace contact_app {
 namespace {
 
 struct PairRow {
-    const char* suffix;
     int dim, num_slave, num_master;
 };
 
-constexpr PairRow kPairs[] = {{"2D2N", 2, 2, 2}, {"3D3N", 3, 3, 3}, {"3D4N", 3, 4, 4}, {"3D3N4N", 3, 3, 4},
-                              {"3D4N3N", 3, 4, 3}};
+#define CONTACT_APP_PAIR_ROW_(A, D, NS, NM) PairRow{D, NS, NM},
+constexpr PairRow kPairs[] = {CONTACT_APP_FOR_EACH_MORTAR_PAIR(CONTACT_APP_PAIR_ROW_, ~)};
+#undef CONTACT_APP_PAIR_ROW_
+
+/// The Kratos pair suffix: "<d>D<n_s>N", plus "<n_m>N" when the master face differs (3D3N4N).
+std::string PairSuffix(const PairRow& pair) {
+    std::string suffix = std::to_string(pair.dim) + "D" + std::to_string(pair.num_slave) + "N";
+    if (pair.num_master != pair.num_slave) suffix += std::to_string(pair.num_master) + "N";
+    return suffix;
+}
 
 using Factory = std::shared_ptr<const Condition> (*)(const PairRow&, bool nv, bool axisym, Geometry::Pointer slave,
                                                       Geometry::Pointer master);
@@ -34,46 +43,48 @@ struct FamilyRow {
     const char* family;  ///< "Frictionless", "FrictionlessComponents", "Frictional", "MeshTying", "MPC"
     FrictionalCase frictional_case;  ///< non-contact families: the case with the same local size (matrix_size)
     bool has_axisym;
-    bool implemented;  ///< flip (and give the factory) when the family lands
     Factory factory;
     bool has_nv = true;                           ///< mesh tying and MPC have no NV variant
     const char* stem = "MortarContactCondition";  ///< "MortarCondition" for mesh tying
 };
 
-/// The plane prototypes of a family (5 pairs × NV). @throws InternalError for an axisymmetric or unknown row
+/// make(TPair{}) for the registered pair TPair (RegisteredMortarPairs) that matches @p pair.
+/// @throws InternalError for a pair outside the list
+template <class TMake, class... TPairs>
+std::shared_ptr<const Condition> ForPair(const PairRow& pair, const TMake& make, std::tuple<TPairs...>* = nullptr) {
+    if constexpr (sizeof...(TPairs) == 0) {
+        return ForPair(pair, make, static_cast<RegisteredMortarPairs*>(nullptr));
+    } else {
+        std::shared_ptr<const Condition> prototype;
+        ((pair.dim == TPairs::Dim && pair.num_slave == TPairs::NumSlave && pair.num_master == TPairs::NumMaster &&
+          (prototype = make(TPairs{}), true)) ||
+         ...);
+        CONTACT_CHECK(prototype != nullptr, InternalError, "contact condition table: unknown pair ", PairSuffix(pair));
+        return prototype;
+    }
+}
+
+/// The plane prototypes of a family (every pair × NV). @throws InternalError for an axisymmetric row
 template <template <int, int, bool, int> class TFamily>
 std::shared_ptr<const Condition> MakePlaneFamily(const PairRow& pair, bool nv, bool axisym, Geometry::Pointer s,
                                                  Geometry::Pointer m) {
     CONTACT_CHECK(!axisym, InternalError, "contact condition table: the family has no axisymmetric variant");
-    auto make = [&](auto prototype) -> std::shared_ptr<const Condition> { return prototype; };
-#define CONTACT_APP_PAIR(D, NS, NM)                                                                          \
-    if (pair.dim == D && pair.num_slave == NS && pair.num_master == NM)                                      \
-        return nv ? make(std::make_shared<const TFamily<D, NS, true, NM>>(0, s, nullptr, m))                 \
-                  : make(std::make_shared<const TFamily<D, NS, false, NM>>(0, s, nullptr, m));
-    CONTACT_APP_PAIR(2, 2, 2)
-    CONTACT_APP_PAIR(3, 3, 3)
-    CONTACT_APP_PAIR(3, 4, 4)
-    CONTACT_APP_PAIR(3, 3, 4)
-    CONTACT_APP_PAIR(3, 4, 3)
-#undef CONTACT_APP_PAIR
-    CONTACT_THROW(InternalError, "contact condition table: unknown pair ", pair.suffix);
+    return ForPair(pair, [&](auto pair_traits) -> std::shared_ptr<const Condition> {
+        using P = decltype(pair_traits);
+        if (nv) return std::make_shared<const TFamily<P::Dim, P::NumSlave, true, P::NumMaster>>(0, s, nullptr, m);
+        return std::make_shared<const TFamily<P::Dim, P::NumSlave, false, P::NumMaster>>(0, s, nullptr, m);
+    });
 }
 
-/// The prototypes of a family without NV / axisymmetric variants (mesh tying, MPC): true mixed pairs.
+/// The prototypes of a family without NV / axisymmetric variants (mesh tying, MPC).
 template <template <int, int, int> class TFamily>
 std::shared_ptr<const Condition> MakePairFamily(const PairRow& pair, bool nv, bool axisym, Geometry::Pointer s,
                                                 Geometry::Pointer m) {
     CONTACT_CHECK(!nv && !axisym, InternalError, "condition table: the family has no NV / axisymmetric variant");
-#define CONTACT_APP_PAIR(D, NS, NM)                                     \
-    if (pair.dim == D && pair.num_slave == NS && pair.num_master == NM) \
-        return std::make_shared<const TFamily<D, NS, NM>>(0, s, nullptr, m);
-    CONTACT_APP_PAIR(2, 2, 2)
-    CONTACT_APP_PAIR(3, 3, 3)
-    CONTACT_APP_PAIR(3, 4, 4)
-    CONTACT_APP_PAIR(3, 3, 4)
-    CONTACT_APP_PAIR(3, 4, 3)
-#undef CONTACT_APP_PAIR
-    CONTACT_THROW(InternalError, "condition table: unknown pair ", pair.suffix);
+    return ForPair(pair, [&](auto pair_traits) -> std::shared_ptr<const Condition> {
+        using P = decltype(pair_traits);
+        return std::make_shared<const TFamily<P::Dim, P::NumSlave, P::NumMaster>>(0, s, nullptr, m);
+    });
 }
 
 /// The plane prototypes plus the 2D axisymmetric variant TAxisym.
@@ -86,24 +97,25 @@ std::shared_ptr<const Condition> MakeFamily(const PairRow& pair, bool nv, bool a
     return MakePlaneFamily<TFamily>(pair, nv, false, std::move(s), std::move(m));
 }
 
+/// The families, the one place to add one (its class file ends with CONTACT_APP_INSTANTIATE_CONTACT_FAMILY).
 const FamilyRow kFamilies[] = {
-    {"ALM", "Frictionless", FrictionalCase::FRICTIONLESS, true, true,
+    {"ALM", "Frictionless", FrictionalCase::FRICTIONLESS, true,
      MakeFamily<AugmentedLagrangianMethodFrictionlessMortarContactCondition,
                 AugmentedLagrangianMethodFrictionlessMortarContactAxisymCondition>},
-    {"ALM", "FrictionlessComponents", FrictionalCase::FRICTIONLESS_COMPONENTS, false, true,
+    {"ALM", "FrictionlessComponents", FrictionalCase::FRICTIONLESS_COMPONENTS, false,
      MakePlaneFamily<AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition>},
-    {"ALM", "Frictional", FrictionalCase::FRICTIONAL, true, true,
+    {"ALM", "Frictional", FrictionalCase::FRICTIONAL, true,
      MakeFamily<AugmentedLagrangianMethodFrictionalMortarContactCondition,
                 AugmentedLagrangianMethodFrictionalMortarContactAxisymCondition>},
-    {"Penalty", "Frictionless", FrictionalCase::FRICTIONLESS_PENALTY, true, true,
+    {"Penalty", "Frictionless", FrictionalCase::FRICTIONLESS_PENALTY, true,
      MakeFamily<PenaltyMethodFrictionlessMortarContactCondition, PenaltyMethodFrictionlessMortarContactAxisymCondition>},
-    {"Penalty", "Frictional", FrictionalCase::FRICTIONAL_PENALTY, true, true,
+    {"Penalty", "Frictional", FrictionalCase::FRICTIONAL_PENALTY, true,
      MakeFamily<PenaltyMethodFrictionalMortarContactCondition, PenaltyMethodFrictionalMortarContactAxisymCondition>},
     // Non-contact families: MeshTyingMortarCondition<pair> (size of the DISPLACEMENT tying, d(2n_s + n_m)) and
     // MPCMortarContactCondition<pair> (d(n_s + n_m)).
-    {"", "MeshTying", FrictionalCase::FRICTIONLESS_COMPONENTS, false, true, MakePairFamily<MeshTyingMortarCondition>,
-     false, "MortarCondition"},
-    {"", "MPC", FrictionalCase::FRICTIONLESS_PENALTY, false, true, MakePairFamily<MPCMortarContactCondition>, false},
+    {"", "MeshTying", FrictionalCase::FRICTIONLESS_COMPONENTS, false, MakePairFamily<MeshTyingMortarCondition>, false,
+     "MortarCondition"},
+    {"", "MPC", FrictionalCase::FRICTIONLESS_PENALTY, false, MakePairFamily<MPCMortarContactCondition>, false},
 };
 
 Geometry::Pointer PrototypeFace(int dim, int num_nodes) {
@@ -113,18 +125,17 @@ Geometry::Pointer PrototypeFace(int dim, int num_nodes) {
     return CreateGeometry(name, points);
 }
 
-/// Calls @p visit(row, family, pair) for every name of the decoder whose family is implemented.
+/// Calls @p visit(row, family, pair) for every name of the table (family × NV × axisym × pair).
 template <class TVisit>
-void ForEachImplementedName(TVisit&& visit) {
+void ForEachName(TVisit&& visit) {
     for (const FamilyRow& family : kFamilies) {
-        if (!family.implemented) continue;
         for (const bool nv : {false, true})
             for (const bool axisym : {false, true})
                 for (const PairRow& pair : kPairs) {
                     if ((axisym && (!family.has_axisym || pair.dim != 2)) || (nv && !family.has_nv)) continue;
                     ContactConditionName row;
                     row.name = std::string(family.method) + (nv ? "NV" : "") + family.family +
-                               (axisym ? "Axisym" : "") + family.stem + pair.suffix;
+                               (axisym ? "Axisym" : "") + family.stem + PairSuffix(pair);
                     row.family = std::string(family.method) + family.family;
                     row.normal_variation = nv;
                     row.axisymmetric = axisym;
@@ -142,7 +153,7 @@ void ForEachImplementedName(TVisit&& visit) {
 const std::vector<ContactConditionName>& RegisteredContactConditionNames() {
     static const std::vector<ContactConditionName> names = [] {
         std::vector<ContactConditionName> result;
-        ForEachImplementedName([&](const ContactConditionName& row, const FamilyRow&, const PairRow&) {
+        ForEachName([&](const ContactConditionName& row, const FamilyRow&, const PairRow&) {
             result.push_back(row);
         });
         return result;
@@ -154,7 +165,7 @@ void RegisterContactConditions() {
     static bool registered = false;
     if (registered) return;
     registered = true;
-    ForEachImplementedName([](const ContactConditionName& row, const FamilyRow& family, const PairRow& pair) {
+    ForEachName([](const ContactConditionName& row, const FamilyRow& family, const PairRow& pair) {
         Registry<Condition>::Instance().Add(
             row.name, family.factory(pair, row.normal_variation, row.axisymmetric, PrototypeFace(pair.dim, pair.num_slave),
                                      PrototypeFace(pair.dim, pair.num_master)));

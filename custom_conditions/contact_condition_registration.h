@@ -16,10 +16,10 @@ struct ContactConditionName {
     int matrix_size = 0;  ///< local system size of the family for this pair
 };
 
-/// Every name of the decoder table whose family is implemented (the names RegisterContactConditions adds).
+/// Every name of the table (the names RegisterContactConditions adds), in table order.
 const std::vector<ContactConditionName>& RegisteredContactConditionNames();
 
-/// Registers the prototypes of the implemented contact condition families in Registry<Condition>, from one
+/// Registers the prototypes of the contact condition families in Registry<Condition>, from one
 /// table (method × NV × family × axisym × pair). Idempotent.
 void RegisterContactConditions();
 

@@ -297,10 +297,6 @@ std::string TYING_CLASS::Info() const {
 #undef TYING_TEMPLATE
 #undef TYING_CLASS
 
-template class MeshTyingMortarCondition<2, 2, 2>;
-template class MeshTyingMortarCondition<3, 3, 3>;
-template class MeshTyingMortarCondition<3, 4, 4>;
-template class MeshTyingMortarCondition<3, 3, 4>;
-template class MeshTyingMortarCondition<3, 4, 3>;
+CONTACT_APP_INSTANTIATE_FOR_EACH_MORTAR_PAIR(MeshTyingMortarCondition)
 
 }  // namespace contact_app

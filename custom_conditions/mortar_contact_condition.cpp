@@ -291,22 +291,16 @@ void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Pr
 #undef MORTAR_CLASS
 
 // -- Explicit instantiations: the registered pairs of the implemented families, with and without NV --
-#define CONTACT_APP_INSTANTIATE_MORTAR(FAMILY)                                     \
-    template class MortarContactCondition<2, 2, FrictionalCase::FAMILY, false, 2>; \
-    template class MortarContactCondition<2, 2, FrictionalCase::FAMILY, true, 2>;  \
-    template class MortarContactCondition<3, 3, FrictionalCase::FAMILY, false, 3>; \
-    template class MortarContactCondition<3, 3, FrictionalCase::FAMILY, true, 3>;  \
-    template class MortarContactCondition<3, 4, FrictionalCase::FAMILY, false, 4>; \
-    template class MortarContactCondition<3, 4, FrictionalCase::FAMILY, true, 4>;  \
-    template class MortarContactCondition<3, 3, FrictionalCase::FAMILY, false, 4>; \
-    template class MortarContactCondition<3, 3, FrictionalCase::FAMILY, true, 4>;  \
-    template class MortarContactCondition<3, 4, FrictionalCase::FAMILY, false, 3>; \
-    template class MortarContactCondition<3, 4, FrictionalCase::FAMILY, true, 3>;
+#define CONTACT_APP_INSTANTIATE_MORTAR_(FAMILY, D, NS, NM)                           \
+    template class MortarContactCondition<D, NS, FrictionalCase::FAMILY, false, NM>; \
+    template class MortarContactCondition<D, NS, FrictionalCase::FAMILY, true, NM>;
+#define CONTACT_APP_INSTANTIATE_MORTAR(FAMILY) CONTACT_APP_FOR_EACH_MORTAR_PAIR(CONTACT_APP_INSTANTIATE_MORTAR_, FAMILY)
 CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONLESS)
 CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONLESS_COMPONENTS)
 CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONLESS_PENALTY)
 CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONAL)
 CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONAL_PENALTY)
 #undef CONTACT_APP_INSTANTIATE_MORTAR
+#undef CONTACT_APP_INSTANTIATE_MORTAR_
 
 }  // namespace contact_app

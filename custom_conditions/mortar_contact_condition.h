@@ -131,4 +131,16 @@ private:
     InternalError NotInBase(const char* method) const;
 };
 
+/// Explicit instantiations of a contact family TClass<TDim, TNumNodes, TNormalVariation, TNumNodesMaster> for every
+/// registered pair (CONTACT_APP_FOR_EACH_MORTAR_PAIR) × NV; a family's .cpp ends with it.
+#define CONTACT_APP_INSTANTIATE_NV_PAIR_(TClass, D, NS, NM) \
+    template class TClass<D, NS, false, NM>;                \
+    template class TClass<D, NS, true, NM>;
+#define CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(TClass) \
+    CONTACT_APP_FOR_EACH_MORTAR_PAIR(CONTACT_APP_INSTANTIATE_NV_PAIR_, TClass)
+/// Explicit instantiations of the 2D axisymmetric variant TAxisymClass<2, TNormalVariation> × NV.
+#define CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(TAxisymClass) \
+    template class TAxisymClass<2, false>;                  \
+    template class TAxisymClass<2, true>;
+
 }  // namespace contact_app

@@ -501,10 +501,6 @@ std::string MPC_CLASS::Info() const {
 #undef MPC_TEMPLATE
 #undef MPC_CLASS
 
-template class MPCMortarContactCondition<2, 2, 2>;
-template class MPCMortarContactCondition<3, 3, 3>;
-template class MPCMortarContactCondition<3, 4, 4>;
-template class MPCMortarContactCondition<3, 3, 4>;
-template class MPCMortarContactCondition<3, 4, 3>;
+CONTACT_APP_INSTANTIATE_FOR_EACH_MORTAR_PAIR(MPCMortarContactCondition)
 
 }  // namespace contact_app

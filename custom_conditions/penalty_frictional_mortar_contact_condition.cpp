@@ -191,17 +191,7 @@ Condition::Pointer PenaltyMethodFrictionalMortarContactAxisymCondition<TNS, TNV>
 #undef PENF_TEMPLATE
 #undef PENF_CLASS
 
-template class PenaltyMethodFrictionalMortarContactCondition<2, 2, false, 2>;
-template class PenaltyMethodFrictionalMortarContactCondition<2, 2, true, 2>;
-template class PenaltyMethodFrictionalMortarContactCondition<3, 3, false, 3>;
-template class PenaltyMethodFrictionalMortarContactCondition<3, 3, true, 3>;
-template class PenaltyMethodFrictionalMortarContactCondition<3, 4, false, 4>;
-template class PenaltyMethodFrictionalMortarContactCondition<3, 4, true, 4>;
-template class PenaltyMethodFrictionalMortarContactCondition<3, 3, false, 4>;
-template class PenaltyMethodFrictionalMortarContactCondition<3, 3, true, 4>;
-template class PenaltyMethodFrictionalMortarContactCondition<3, 4, false, 3>;
-template class PenaltyMethodFrictionalMortarContactCondition<3, 4, true, 3>;
-template class PenaltyMethodFrictionalMortarContactAxisymCondition<2, false>;
-template class PenaltyMethodFrictionalMortarContactAxisymCondition<2, true>;
+CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(PenaltyMethodFrictionalMortarContactCondition)
+CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(PenaltyMethodFrictionalMortarContactAxisymCondition)
 
 }  // namespace contact_app

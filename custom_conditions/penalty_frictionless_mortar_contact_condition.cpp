@@ -99,17 +99,7 @@ Condition::Pointer PenaltyMethodFrictionlessMortarContactAxisymCondition<TNS, TN
 #undef PENALTY_TEMPLATE
 #undef PENALTY_CLASS
 
-template class PenaltyMethodFrictionlessMortarContactCondition<2, 2, false, 2>;
-template class PenaltyMethodFrictionlessMortarContactCondition<2, 2, true, 2>;
-template class PenaltyMethodFrictionlessMortarContactCondition<3, 3, false, 3>;
-template class PenaltyMethodFrictionlessMortarContactCondition<3, 3, true, 3>;
-template class PenaltyMethodFrictionlessMortarContactCondition<3, 4, false, 4>;
-template class PenaltyMethodFrictionlessMortarContactCondition<3, 4, true, 4>;
-template class PenaltyMethodFrictionlessMortarContactCondition<3, 3, false, 4>;
-template class PenaltyMethodFrictionlessMortarContactCondition<3, 3, true, 4>;
-template class PenaltyMethodFrictionlessMortarContactCondition<3, 4, false, 3>;
-template class PenaltyMethodFrictionlessMortarContactCondition<3, 4, true, 3>;
-template class PenaltyMethodFrictionlessMortarContactAxisymCondition<2, false>;
-template class PenaltyMethodFrictionlessMortarContactAxisymCondition<2, true>;
+CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(PenaltyMethodFrictionlessMortarContactCondition)
+CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(PenaltyMethodFrictionlessMortarContactAxisymCondition)
 
 }  // namespace contact_app

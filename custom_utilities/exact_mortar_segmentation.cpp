@@ -268,7 +268,7 @@ bool DecodeEdgeIntersectionTag(int tag, int base_tag, int& s0, int& s1, int& m0,
 }
 
 // -- Explicit instantiations: the registered pairs × {double, Dual<d(n_s+n_m)>} --
-#define CONTACT_APP_INSTANTIATE_SEGMENTATION(D, NS, NM)                                                        \
+#define CONTACT_APP_INSTANTIATE_SEGMENTATION(A, D, NS, NM)                                                     \
     template class ExactMortarSegmentation<D, NS, NM, double>;                                                 \
     template class ExactMortarSegmentation<D, NS, NM, Dual<D*(NS + NM)>>;                                      \
     template bool ExactMortarSegmentation<D, NS, NM, double>::ComputeCells<double>(                           \
@@ -280,11 +280,7 @@ bool DecodeEdgeIntersectionTag(int tag, int base_tag, int& s0, int& s1, int& m0,
     template bool ExactMortarSegmentation<D, NS, NM, Dual<D*(NS + NM)>>::ComputeCells<Dual<D*(NS + NM)>>(    \
         const SlaveCoordinates&, const SpatialVector<Dual<D*(NS + NM)>, D>&, const MasterCoordinates&,          \
         MortarCells<Dual<D*(NS + NM)>, D>&) const;
-CONTACT_APP_INSTANTIATE_SEGMENTATION(2, 2, 2)
-CONTACT_APP_INSTANTIATE_SEGMENTATION(3, 3, 3)
-CONTACT_APP_INSTANTIATE_SEGMENTATION(3, 4, 4)
-CONTACT_APP_INSTANTIATE_SEGMENTATION(3, 3, 4)
-CONTACT_APP_INSTANTIATE_SEGMENTATION(3, 4, 3)
+CONTACT_APP_FOR_EACH_MORTAR_PAIR(CONTACT_APP_INSTANTIATE_SEGMENTATION, ~)
 #undef CONTACT_APP_INSTANTIATE_SEGMENTATION
 
 }  // namespace contact_app

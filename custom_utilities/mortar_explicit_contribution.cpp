@@ -102,7 +102,7 @@ MortarOperators<double, TNS, TNM> ComputePreviousMortarOperators(const MortarInt
         const NodeCoordinates<T, D, NM>&, const NodeCoordinates<TN, D, NS>&, const MortarOperators<double, NS, NM>&, \
         const NodeCoordinates<double, D, NS>&, const NodeCoordinates<double, D, NM>&, double, bool,            \
         const ExplicitContributionOptions&);
-#define CONTACT_APP_INSTANTIATE_EXPLICIT(D, NS, NM)                                                             \
+#define CONTACT_APP_INSTANTIATE_EXPLICIT(A, D, NS, NM)                                                          \
     CONTACT_APP_INSTANTIATE_EXPLICIT_N(D, NS, NM, double, double)                                              \
     CONTACT_APP_INSTANTIATE_EXPLICIT_N(D, NS, NM, Dual<D*(NS + NM)>, double)                                   \
     CONTACT_APP_INSTANTIATE_EXPLICIT_N(D, NS, NM, Dual<D*(NS + NM)>, Dual<D*(NS + NM)>)                        \
@@ -110,11 +110,7 @@ MortarOperators<double, TNS, TNM> ComputePreviousMortarOperators(const MortarInt
         const MortarIntegrator<D, NS, NM, double>&, const NodeCoordinates<double, D, NS>&,                     \
         const SpatialVector<double, D>&, const NodeCoordinates<double, D, NM>&,                                \
         const NodeCoordinates<double, D, NS>&, bool&);
-CONTACT_APP_INSTANTIATE_EXPLICIT(2, 2, 2)
-CONTACT_APP_INSTANTIATE_EXPLICIT(3, 3, 3)
-CONTACT_APP_INSTANTIATE_EXPLICIT(3, 4, 4)
-CONTACT_APP_INSTANTIATE_EXPLICIT(3, 3, 4)
-CONTACT_APP_INSTANTIATE_EXPLICIT(3, 4, 3)
+CONTACT_APP_FOR_EACH_MORTAR_PAIR(CONTACT_APP_INSTANTIATE_EXPLICIT, ~)
 #undef CONTACT_APP_INSTANTIATE_EXPLICIT
 #undef CONTACT_APP_INSTANTIATE_EXPLICIT_N
 

@@ -65,14 +65,12 @@ NodeCoordinates<double, TDim, TNN> NodalNormals(const Geometry& geometry) {
     return n;
 }
 
-#define CONTACT_APP_INSTANTIATE_ADAPTERS(D, NN)                                                          \
+#define CONTACT_APP_INSTANTIATE_ADAPTERS(A, D, NN)                                                       \
     template NodeCoordinates<double, D, NN> CurrentCoordinates<D, NN>(const Geometry&, bool*);           \
     template NodeCoordinates<double, D, NN> MeshCoordinates<D, NN>(const Geometry&);                     \
     template NodeCoordinates<double, D, NN> CoordinatesAtStep<D, NN>(const Geometry&, std::size_t);     \
     template NodeCoordinates<double, D, NN> NodalNormals<D, NN>(const Geometry&);
-CONTACT_APP_INSTANTIATE_ADAPTERS(2, 2)
-CONTACT_APP_INSTANTIATE_ADAPTERS(3, 3)
-CONTACT_APP_INSTANTIATE_ADAPTERS(3, 4)
+CONTACT_APP_FOR_EACH_MORTAR_FACE(CONTACT_APP_INSTANTIATE_ADAPTERS, ~)
 #undef CONTACT_APP_INSTANTIATE_ADAPTERS
 
 }  // namespace contact_app

@@ -89,14 +89,13 @@ NodeCoordinates<T, TDim, TNN> FaceNodalUnitNormals(const NodeCoordinates<T, TDim
                                                           const Eigen::Matrix<double, D - 1, 1>&);             \
     template SpatialVector<T, D> FaceCenterUnitNormal<D, NN, T>(const NodeCoordinates<T, D, NN>&);             \
     template NodeCoordinates<T, D, NN> FaceNodalUnitNormals<D, NN, T>(const NodeCoordinates<T, D, NN>&);
-CONTACT_APP_INSTANTIATE_NORMALS(2, 2, double)
-CONTACT_APP_INSTANTIATE_NORMALS(2, 2, Dual<8>)
-CONTACT_APP_INSTANTIATE_NORMALS(3, 3, double)
-CONTACT_APP_INSTANTIATE_NORMALS(3, 3, Dual<18>)
-CONTACT_APP_INSTANTIATE_NORMALS(3, 3, Dual<21>)
-CONTACT_APP_INSTANTIATE_NORMALS(3, 4, double)
-CONTACT_APP_INSTANTIATE_NORMALS(3, 4, Dual<24>)
-CONTACT_APP_INSTANTIATE_NORMALS(3, 4, Dual<21>)
+// double per face; the slave face with the AD scalar of each pair, Dual<d(n_s + n_m)>.
+#define CONTACT_APP_INSTANTIATE_FACE_NORMALS(A, D, NN) CONTACT_APP_INSTANTIATE_NORMALS(D, NN, double)
+#define CONTACT_APP_INSTANTIATE_PAIR_NORMALS(A, D, NS, NM) CONTACT_APP_INSTANTIATE_NORMALS(D, NS, Dual<D*(NS + NM)>)
+CONTACT_APP_FOR_EACH_MORTAR_FACE(CONTACT_APP_INSTANTIATE_FACE_NORMALS, ~)
+CONTACT_APP_FOR_EACH_MORTAR_PAIR(CONTACT_APP_INSTANTIATE_PAIR_NORMALS, ~)
+#undef CONTACT_APP_INSTANTIATE_PAIR_NORMALS
+#undef CONTACT_APP_INSTANTIATE_FACE_NORMALS
 #undef CONTACT_APP_INSTANTIATE_NORMALS
 
 }  // namespace contact_app

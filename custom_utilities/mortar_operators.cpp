@@ -168,17 +168,13 @@ MortarPairIntegration<T, TDim, TNS, TNM> IntegrateMortarPair(const MortarIntegra
     template MortarPairIntegration<T, D, NS, NM> IntegrateMortarPair<D, NS, NM, T, TN>(                       \
         const MortarIntegrator<D, NS, NM, T>&, const NodeCoordinates<T, D, NS>&, const SpatialVector<TN, D>&, \
         const NodeCoordinates<T, D, NM>&, const NodeCoordinates<TN, D, NS>&, bool);
-#define CONTACT_APP_INSTANTIATE_INTEGRATION(D, NS, NM)                                                         \
+#define CONTACT_APP_INSTANTIATE_INTEGRATION(A, D, NS, NM)                                                      \
     template class MortarIntegrator<D, NS, NM, double>;                                                        \
     template class MortarIntegrator<D, NS, NM, Dual<D*(NS + NM)>>;                                             \
     CONTACT_APP_INSTANTIATE_INTEGRATION_N(D, NS, NM, double, double)                                           \
     CONTACT_APP_INSTANTIATE_INTEGRATION_N(D, NS, NM, Dual<D*(NS + NM)>, double)                                \
     CONTACT_APP_INSTANTIATE_INTEGRATION_N(D, NS, NM, Dual<D*(NS + NM)>, Dual<D*(NS + NM)>)
-CONTACT_APP_INSTANTIATE_INTEGRATION(2, 2, 2)
-CONTACT_APP_INSTANTIATE_INTEGRATION(3, 3, 3)
-CONTACT_APP_INSTANTIATE_INTEGRATION(3, 4, 4)
-CONTACT_APP_INSTANTIATE_INTEGRATION(3, 3, 4)
-CONTACT_APP_INSTANTIATE_INTEGRATION(3, 4, 3)
+CONTACT_APP_FOR_EACH_MORTAR_PAIR(CONTACT_APP_INSTANTIATE_INTEGRATION, ~)
 #undef CONTACT_APP_INSTANTIATE_INTEGRATION
 #undef CONTACT_APP_INSTANTIATE_INTEGRATION_N
 

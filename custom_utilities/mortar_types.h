@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <tuple>
 #include <vector>
 
 #include <Eigen/Core>
@@ -10,8 +11,20 @@
 
 namespace contact_app {
 
-/// Compile-time description of a registered mortar pair <TDim, TNumNodes (slave), TNumNodesMaster>:
-/// 2D2N <2,2,2>, 3D3N <3,3,3>, 3D4N <3,4,4>, 3D3N4N <3,3,4>, 3D4N3N <3,4,3>.
+/// The registered mortar pairs, the one list to extend with a pair: X(A, TDim, TNumNodes (slave), TNumNodesMaster)
+/// for 2D2N, 3D3N, 3D4N, 3D3N4N, 3D4N3N (A is passed through to X, e.g. a class template or `~`). Every per-pair
+/// explicit instantiation (segmentation, operators, explicit contributions, normals, the condition families) and
+/// the registered condition names (custom_conditions/contact_condition_registration.cpp) expand it.
+#define CONTACT_APP_FOR_EACH_MORTAR_PAIR(X, A) X(A, 2, 2, 2) X(A, 3, 3, 3) X(A, 3, 4, 4) X(A, 3, 3, 4) X(A, 3, 4, 3)
+/// The faces of those pairs, X(A, TDim, TNumNodes): per-face instantiations (adapters, double-valued normals).
+#define CONTACT_APP_FOR_EACH_MORTAR_FACE(X, A) X(A, 2, 2) X(A, 3, 3) X(A, 3, 4)
+/// Explicit instantiation of TClass<TDim, TNumNodes, TNumNodesMaster> for every registered pair.
+#define CONTACT_APP_INSTANTIATE_PAIR_(TClass, D, NS, NM) template class TClass<D, NS, NM>;
+#define CONTACT_APP_INSTANTIATE_FOR_EACH_MORTAR_PAIR(TClass) \
+    CONTACT_APP_FOR_EACH_MORTAR_PAIR(CONTACT_APP_INSTANTIATE_PAIR_, TClass)
+
+/// Compile-time description of a registered mortar pair <TDim, TNumNodes (slave), TNumNodesMaster>
+/// (CONTACT_APP_FOR_EACH_MORTAR_PAIR).
 /// DOF index convention (as Kratos' DerivativeData): q = node·TDim + component, slave nodes first.
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 struct MortarPairTraits {
@@ -26,6 +39,21 @@ struct MortarPairTraits {
     /// The AD scalar holding ∂/∂(all pair coordinates).
     using ADScalar = Dual<NumDofs>;
 };
+
+namespace detail {
+template <class TTuple>
+struct DropFirstType;
+template <class TFirst, class... TRest>
+struct DropFirstType<std::tuple<TFirst, TRest...>> {
+    using type = std::tuple<TRest...>;
+};
+}  // namespace detail
+
+#define CONTACT_APP_MORTAR_PAIR_TRAITS_(A, D, NS, NM) , MortarPairTraits<D, NS, NM>
+/// std::tuple of the MortarPairTraits of every registered pair, for compile-time loops over the pairs.
+using RegisteredMortarPairs =
+    detail::DropFirstType<std::tuple<void CONTACT_APP_FOR_EACH_MORTAR_PAIR(CONTACT_APP_MORTAR_PAIR_TRAITS_, ~)>>::type;
+#undef CONTACT_APP_MORTAR_PAIR_TRAITS_
 
 /// Node coordinates of one side: row i = node i (TDim columns).
 template <class T, int TDim, int TNumNodes>

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -14,8 +15,14 @@
 
 namespace contact_app::testing {
 
-using PairKinds = ::testing::Types<MortarPairTraits<2, 2, 2>, MortarPairTraits<3, 3, 3>, MortarPairTraits<3, 4, 4>,
-                                   MortarPairTraits<3, 3, 4>, MortarPairTraits<3, 4, 3>>;
+template <class TTuple>
+struct TestingTypes;
+template <class... TPairs>
+struct TestingTypes<std::tuple<TPairs...>> {
+    using type = ::testing::Types<TPairs...>;
+};
+/// Every registered pair (CONTACT_APP_FOR_EACH_MORTAR_PAIR), so a new pair gets the typed tests.
+using PairKinds = TestingTypes<RegisteredMortarPairs>::type;
 
 struct PairKindName {
     template <class TPair>
