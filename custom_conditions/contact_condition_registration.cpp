@@ -8,7 +8,9 @@
 #include <utility>
 
 #include "contact_app/kernel/geometries/geometry_factory.h"
+#include "contact_app/application.h"
 #include "contact_app/kernel/registry.h"
+#include "contact_app/kernel/variables.h"
 #include "custom_conditions/alm_frictionless_components_mortar_contact_condition.h"
 #include "custom_conditions/alm_frictional_mortar_contact_condition.h"
 #include "custom_conditions/alm_frictionless_mortar_contact_condition.h"
@@ -148,6 +150,62 @@ void ForEachName(TVisit&& visit) {
     }
 }
 
+/// A solver mortar_type: the condition family it runs (a kFamilies row) and what it adds.
+struct MortarTypeRow {
+    const char* name;
+    const char* method;
+    const char* family;
+    const char* contact_type;
+    bool pure_slip;
+    MortarCriterionFamily criterion;
+};
+
+const MortarTypeRow kMortarTypes[] = {
+    {"ALMContactFrictionless", "ALM", "Frictionless", "Frictionless", false, MortarCriterionFamily::ALM_FRICTIONLESS},
+    {"ALMContactFrictionlessComponents", "ALM", "FrictionlessComponents", "FrictionlessComponents", false,
+     MortarCriterionFamily::ALM_FRICTIONLESS_COMPONENTS},
+    {"ALMContactFrictional", "ALM", "Frictional", "Frictional", false, MortarCriterionFamily::ALM_FRICTIONAL},
+    {"ALMContactFrictionalPureSlip", "ALM", "Frictional", "FrictionalPureSlip", true,
+     MortarCriterionFamily::ALM_FRICTIONAL},
+    {"PenaltyContactFrictionless", "Penalty", "Frictionless", "Frictionless", false,
+     MortarCriterionFamily::PENALTY_FRICTIONLESS},
+    {"PenaltyContactFrictional", "Penalty", "Frictional", "Frictional", false, MortarCriterionFamily::PENALTY_FRICTIONAL},
+    {"PenaltyContactFrictionalPureSlip", "Penalty", "Frictional", "FrictionalPureSlip", true,
+     MortarCriterionFamily::PENALTY_FRICTIONAL},
+    {"ScalarMeshTying", "", "MeshTying", "", false, MortarCriterionFamily::MESH_TYING},
+    {"ComponentsMeshTying", "", "MeshTying", "", false, MortarCriterionFamily::MESH_TYING},
+};
+
+const FamilyRow& FindFamily(const std::string& method, const std::string& family) {
+    for (const FamilyRow& row : kFamilies)
+        if (method == row.method && family == row.family) return row;
+    CONTACT_THROW(InternalError, "contact condition table: no family ", method, family);
+}
+
+/// The variables and DoFs of a mortar type: NORMAL and NODAL_H always, then the multiplier (scalar for ALM
+/// frictionless and scalar tying, by components for the other ALM families and vector tying; none for penalty),
+/// WEIGHTED_GAP for contact, WEIGHTED_SLIP for friction, the multiplier's residual (its reaction).
+void AddVariables(MortarType& type, bool scalar_tying) {
+    const bool alm = type.method == "ALM", tying = type.method.empty();
+    const VariableData* residual = nullptr;
+    if ((alm && type.family == "Frictionless") || scalar_tying) {
+        type.multiplier = alm ? &LAGRANGE_MULTIPLIER_CONTACT_PRESSURE : &SCALAR_LAGRANGE_MULTIPLIER;
+        residual = &WEIGHTED_SCALAR_RESIDUAL;
+        type.dofs = {{type.multiplier, residual}};
+    } else if (alm || tying) {
+        type.multiplier = &VECTOR_LAGRANGE_MULTIPLIER;
+        residual = &WEIGHTED_VECTOR_RESIDUAL;
+        type.dofs = {{&VECTOR_LAGRANGE_MULTIPLIER_X, &WEIGHTED_VECTOR_RESIDUAL_X},
+                     {&VECTOR_LAGRANGE_MULTIPLIER_Y, &WEIGHTED_VECTOR_RESIDUAL_Y},
+                     {&VECTOR_LAGRANGE_MULTIPLIER_Z, &WEIGHTED_VECTOR_RESIDUAL_Z}};
+    }
+    type.nodal_variables = {&NORMAL, &NODAL_H};
+    if (type.multiplier != nullptr) type.nodal_variables.push_back(type.multiplier);
+    if (!tying) type.nodal_variables.push_back(&WEIGHTED_GAP);
+    if (type.frictional) type.nodal_variables.push_back(&WEIGHTED_SLIP);
+    if (residual != nullptr) type.nodal_variables.push_back(residual);
+}
+
 }  // namespace
 
 const std::vector<ContactConditionName>& RegisteredContactConditionNames() {
@@ -159,6 +217,34 @@ const std::vector<ContactConditionName>& RegisteredContactConditionNames() {
         return result;
     }();
     return names;
+}
+
+std::string MortarType::ConditionName(bool normal_variation, bool axisymmetric) const {
+    return method + (normal_variation ? "NV" : "") + family + (axisymmetric ? "Axisym" : "") + condition_stem;
+}
+
+const std::vector<MortarType>& MortarTypes() {
+    static const std::vector<MortarType> types = [] {
+        std::vector<MortarType> result;
+        for (const MortarTypeRow& row : kMortarTypes) {
+            const FamilyRow& family = FindFamily(row.method, row.family);
+            MortarType type;
+            type.name = row.name;
+            type.method = row.method;
+            type.family = row.family;
+            type.contact_type = row.contact_type;
+            const std::string stem = family.stem;
+            type.condition_stem = stem.substr(0, stem.size() - std::string("Condition").size());
+            type.frictional = type.family == "Frictional";
+            type.pure_slip = row.pure_slip;
+            type.has_axisym = family.has_axisym;
+            type.criterion = row.criterion;
+            AddVariables(type, type.name == "ScalarMeshTying");
+            result.push_back(std::move(type));
+        }
+        return result;
+    }();
+    return types;
 }
 
 void RegisterContactConditions() {

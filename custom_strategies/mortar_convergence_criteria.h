@@ -4,6 +4,7 @@
 #include <string>
 
 #include "contact_app/solving/convergence_criteria/convergence_criteria.h"
+#include "custom_conditions/contact_condition_registration.h"
 
 namespace contact_app {
 
@@ -29,15 +30,8 @@ void UpdateContactNormals(ModelPart& rModelPart);
 /// "ComputingContact" (the pairs).
 class BaseMortarConvergenceCriteria : public ConvergenceCriteria {
 public:
-    /// Which set update the family uses.
-    enum class Family {
-        ALM_FRICTIONLESS,
-        ALM_FRICTIONLESS_COMPONENTS,
-        ALM_FRICTIONAL,
-        PENALTY_FRICTIONLESS,
-        PENALTY_FRICTIONAL,
-        MESH_TYING
-    };
+    /// Which set update the family uses (a MortarType's criterion).
+    using Family = MortarCriterionFamily;
 
     /// @param pure_slip frictional families: every active node slips (the slip set is not judged)
     explicit BaseMortarConvergenceCriteria(Family family, bool pure_slip = false);

@@ -1,8 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Contact convergence criteria and the contact Newton strategy (custom_strategies/).
+#include <utility>
+#include <vector>
+
 #include <pybind11/stl.h>
 
+#include "contact_app/bindings/binding_helpers.h"
 #include "contact_app/bindings/bindings.h"
+#include "custom_conditions/contact_condition_registration.h"
 #include "custom_strategies/displacement_lagrange_multiplier_contact_criteria.h"
 #include "custom_strategies/line_search_contact_strategy.h"
 #include "custom_strategies/mixed_ulm_linear_solver.h"
@@ -65,6 +70,42 @@ void BindContactStrategies(py::module_& m) {
         .def("LastActiveFlips", &Mortar::LastActiveFlips)
         .def("LastSlipFlips", &Mortar::LastSlipFlips)
         .def("UpdateNormalsAndTangents", &Mortar::UpdateNormalsAndTangents, py::arg("model_part"));
+
+    py::class_<MortarType>(m, "MortarType",
+                           "A solver mortar_type decoded from the condition table: the condition family it runs, the "
+                           "variables and DoFs the solver adds, the mortar criterion.")
+        .def_readonly("name", &MortarType::name)
+        .def_readonly("method", &MortarType::method, "Condition name prefix: \"ALM\", \"Penalty\"; \"\" for mesh tying.")
+        .def_readonly("family", &MortarType::family, "Condition family: \"Frictionless\", \"Frictional\", ...")
+        .def_readonly("contact_type", &MortarType::contact_type, "The contact process' contact_type; \"\" for tying.")
+        .def_readonly("frictional", &MortarType::frictional)
+        .def_readonly("pure_slip", &MortarType::pure_slip)
+        .def_readonly("has_axisym", &MortarType::has_axisym, "The family has the 2D axisymmetric variant.")
+        .def_readonly("criterion", &MortarType::criterion, "The family of its BaseMortarConvergenceCriteria.")
+        .def_property_readonly(
+            "nodal_variables",
+            [](const MortarType& self) {
+                std::vector<py::object> variables;
+                for (const VariableData* variable : self.nodal_variables) variables.push_back(VariableObject(*variable));
+                return variables;
+            },
+            "Historical variables the solver adds to the structural ones, in order.")
+        .def_property_readonly(
+            "dofs",
+            [](const MortarType& self) {
+                std::vector<std::pair<py::object, py::object>> dofs;
+                for (const auto& [dof, reaction] : self.dofs) dofs.emplace_back(VariableObject(*dof), VariableObject(*reaction));
+                return dofs;
+            },
+            "(DoF, reaction) pairs the solver adds to every node.")
+        .def_property_readonly(
+            "multiplier",
+            [](const MortarType& self) { return self.multiplier ? VariableObject(*self.multiplier) : py::none(); },
+            "The slave multiplier variable; None for the penalty families.")
+        .def("ConditionName", &MortarType::ConditionName, py::arg("normal_variation"), py::arg("axisymmetric"),
+             "The condition name up to the pair, e.g. ALMNVFrictionalAxisymMortarContact.");
+    m.def("MortarTypes", &MortarTypes, py::return_value_policy::reference,
+          "Every solver mortar_type, decoded from the condition table.");
 
     py::class_<MixedULMLinearSolver, LinearSolver, std::shared_ptr<MixedULMLinearSolver>>(
         m, "MixedULMLinearSolver",

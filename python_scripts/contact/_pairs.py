@@ -1,18 +1,35 @@
-"""Settings helpers shared by the contact processes: the ``"0"``…``"9"`` pair blocks and errors.
+"""Settings helpers shared by the contact processes and solvers.
 
-Kratos writes every per-pair setting as an object with the fixed keys ``"0"`` to ``"9"``
-(``docs/input_layer.md`` §3); a key outside that set is an unknown key, as in Kratos.
+The ``"0"``…``"9"`` pair blocks and errors: Kratos writes every per-pair setting as an object with
+the fixed keys ``"0"`` to ``"9"`` (``docs/input_layer.md`` §3); a key outside that set is an unknown
+key, as in Kratos. The solver ``mortar_type`` values and what each decodes into (condition family,
+variables, DoFs, criterion), read from the C++ condition table (docs/registered_conditions.md §4).
 """
 
 from __future__ import annotations
 
 from typing import Any
 
-from contact_app._core import InputError
+from contact_app._core import InputError, MortarType, MortarTypes
 from contact_app.parameters import Parameters
 
 #: The pair keys Kratos accepts, in order.
 PAIR_KEYS = tuple(str(i) for i in range(10))
+
+#: Every solver ``mortar_type`` by name, in the order of the C++ table.
+MORTAR_TYPES: dict[str, MortarType] = {t.name: t for t in MortarTypes()}
+
+
+def process_contact_types(method: str) -> tuple[str, ...]:
+    """The ``contact_type`` values of the contact process of ``method`` ("ALM", "Penalty")."""
+    return tuple(t.contact_type for t in MORTAR_TYPES.values() if t.method == method)
+
+
+def process_mortar_type(method: str, contact_type: str) -> MortarType:
+    """The mortar_type the ``method`` process runs for a (validated) ``contact_type``."""
+    return next(
+        t for t in MORTAR_TYPES.values() if t.method == method and t.contact_type == contact_type
+    )
 
 
 def pair_block(value: Any) -> dict[str, Any]:

@@ -18,7 +18,7 @@ import contact_app as ca
 from contact_app import _core
 from contact_app.parameters import Parameters, suggest
 
-from ._pairs import PAIR_KEYS, fail, pair_block
+from ._pairs import PAIR_KEYS, fail, pair_block, process_contact_types, process_mortar_type
 from .search_base_process import SearchBaseProcess, base_defaults
 
 logger = logging.getLogger("contact_app.contact")
@@ -30,7 +30,6 @@ NORMAL_VARIATION = {
     "nodal_elemental_derivatives": 2,
     "no_derivatives_computation_with_normal_update": 3,
 }
-CONTACT_TYPES = ("Frictionless", "FrictionlessComponents", "Frictional", "FrictionalPureSlip")
 NORMAL_UPDATE_SUFFIX = "WithNormalUpdate"
 
 
@@ -126,8 +125,9 @@ class ALMContactProcess(SearchBaseProcess):
                 suggest(variation, list(NORMAL_VARIATION)),
             )
         self.contact_type = base
-        self.is_frictional = base.startswith("Frictional")
-        self.pure_slip = "PureSlip" in base
+        self.mortar = process_mortar_type(self.method, base)
+        self.is_frictional = self.mortar.frictional
+        self.pure_slip = self.mortar.pure_slip
         normal_update = written.endswith(NORMAL_UPDATE_SUFFIX) or (
             self.is_frictional and not settings["not_normal_update_frictional"].GetBool()
         )
@@ -137,25 +137,16 @@ class ALMContactProcess(SearchBaseProcess):
         self.axisymmetric = settings["alternative_formulations"]["axisymmetric"].GetBool()
 
     def _contact_types(self) -> tuple[str, ...]:
-        return CONTACT_TYPES
-
-    def _mortar_type(self) -> str:
-        if self.contact_type == "Frictionless":
-            return "ALMContactFrictionless"
-        if self.contact_type == "FrictionlessComponents":
-            return "ALMContactFrictionlessComponents"
-        return "ALMContact" + self.contact_type
+        return process_contact_types(self.method)
 
     def _required_variables(self) -> list[tuple[Any, str]]:
-        mortar = self._mortar_type()
-        required = [(ca.WEIGHTED_GAP, mortar), (ca.NORMAL, mortar)]
-        if self.contact_type == "Frictionless":
-            required.append((ca.LAGRANGE_MULTIPLIER_CONTACT_PRESSURE, mortar))
-        else:
-            required.append((ca.VECTOR_LAGRANGE_MULTIPLIER, mortar))
-        if self.is_frictional:
-            required.append((ca.WEIGHTED_SLIP, mortar))
-        return required
+        mortar = self.mortar
+        required = [ca.WEIGHTED_GAP, ca.NORMAL]
+        if mortar.multiplier is not None:
+            required.append(mortar.multiplier)
+        if mortar.frictional:
+            required.append(ca.WEIGHTED_SLIP)
+        return [(variable, mortar.name) for variable in required]
 
     # -- hooks --
 
@@ -249,17 +240,15 @@ class ALMContactProcess(SearchBaseProcess):
 
     def _get_condition_name(self) -> str:
         nodal = NORMAL_VARIATION["nodal_elemental_derivatives"]
-        nv = "NV" if self.normal_variation == nodal else ""
-        axisym = "Axisym" if self.axisymmetric else ""
-        family = "Frictional" if self.is_frictional else self.contact_type
-        if axisym and family == "FrictionlessComponents":
+        nv = self.normal_variation == nodal
+        if self.axisymmetric and not self.mortar.has_axisym:
             raise fail(
                 self.settings["alternative_formulations"],
                 "axisymmetric",
-                "there is no axisymmetric FrictionlessComponents formulation",
+                f"there is no axisymmetric {self.mortar.family} formulation",
                 'contact_type "Frictionless" or "Frictional" with axisymmetry',
             )
-        return f"{self.method}{nv}{family}{axisym}MortarContact"
+        return self.mortar.ConditionName(nv, self.axisymmetric)
 
     def ExecuteInitializeSolutionStep(self) -> None:
         """Search, then reset the SLIP flags every ``slip_step_reset_frequency`` steps."""

@@ -12,6 +12,7 @@ from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 
 import contact_app as ca
+from contact_app._core import MortarType
 from contact_app.analysis.paths import PathResolver
 from contact_app.analysis.solvers.convergence_criteria_factory import (
     CONTACT_CRITERIA,
@@ -28,6 +29,7 @@ from contact_app.analysis.validation import error, not_supported
 from contact_app.legacy_keys import convert_legacy_keys
 from contact_app.parameters import Parameters, suggest
 
+from ._pairs import MORTAR_TYPES
 from .contact_convergence_criteria_factory import CreateContactConvergenceCriterion
 
 if TYPE_CHECKING:
@@ -40,18 +42,6 @@ else:
     SolverMixinBase = object
 
 logger = logging.getLogger("contact_app.contact")
-
-MORTAR_TYPES = (
-    "ALMContactFrictionless",
-    "ALMContactFrictionlessComponents",
-    "ALMContactFrictional",
-    "ALMContactFrictionalPureSlip",
-    "PenaltyContactFrictionless",
-    "PenaltyContactFrictional",
-    "PenaltyContactFrictionalPureSlip",
-    "ScalarMeshTying",
-    "ComponentsMeshTying",
-)
 
 MIXED_ULM_DEFAULTS = {
     "solver_type": "mixed_ulm_linear_solver",
@@ -144,55 +134,12 @@ class ForcedSettings:
             settings[key].SetBool(True)
 
 
-def mortar_variables(mortar_type: str) -> list[Any]:
-    """Historical variables a mortar_type adds to the structural ones (docs/input_layer.md)."""
-    variables = [ca.NORMAL, ca.NODAL_H]
-    if mortar_type == "ALMContactFrictionless":
-        variables += [
-            ca.LAGRANGE_MULTIPLIER_CONTACT_PRESSURE,
-            ca.WEIGHTED_GAP,
-            ca.WEIGHTED_SCALAR_RESIDUAL,
-        ]
-    elif mortar_type == "ALMContactFrictionlessComponents":
-        variables += [ca.VECTOR_LAGRANGE_MULTIPLIER, ca.WEIGHTED_GAP, ca.WEIGHTED_VECTOR_RESIDUAL]
-    elif mortar_type.startswith("ALMContactFrictional"):
-        variables += [
-            ca.VECTOR_LAGRANGE_MULTIPLIER,
-            ca.WEIGHTED_GAP,
-            ca.WEIGHTED_SLIP,
-            ca.WEIGHTED_VECTOR_RESIDUAL,
-        ]
-    elif mortar_type == "PenaltyContactFrictionless":
-        variables += [ca.WEIGHTED_GAP]
-    elif mortar_type.startswith("PenaltyContactFrictional"):
-        variables += [ca.WEIGHTED_GAP, ca.WEIGHTED_SLIP]
-    elif mortar_type == "ScalarMeshTying":
-        variables += [ca.SCALAR_LAGRANGE_MULTIPLIER, ca.WEIGHTED_SCALAR_RESIDUAL]
-    elif mortar_type == "ComponentsMeshTying":
-        variables += [ca.VECTOR_LAGRANGE_MULTIPLIER, ca.WEIGHTED_VECTOR_RESIDUAL]
-    return variables
+def check_mortar_type(contact: Parameters) -> MortarType:
+    """The ``mortar_type`` decoded from the condition table.
 
-
-def mortar_dofs(mortar_type: str) -> list[tuple[Any, Any]]:
-    """(DoF, reaction) pairs a mortar_type adds to every node (docs/input_layer.md §2)."""
-    vector = [
-        (ca.VECTOR_LAGRANGE_MULTIPLIER_X, ca.WEIGHTED_VECTOR_RESIDUAL_X),
-        (ca.VECTOR_LAGRANGE_MULTIPLIER_Y, ca.WEIGHTED_VECTOR_RESIDUAL_Y),
-        (ca.VECTOR_LAGRANGE_MULTIPLIER_Z, ca.WEIGHTED_VECTOR_RESIDUAL_Z),
-    ]
-    if mortar_type == "ALMContactFrictionless":
-        return [(ca.LAGRANGE_MULTIPLIER_CONTACT_PRESSURE, ca.WEIGHTED_SCALAR_RESIDUAL)]
-    if mortar_type == "ScalarMeshTying":
-        return [(ca.SCALAR_LAGRANGE_MULTIPLIER, ca.WEIGHTED_SCALAR_RESIDUAL)]
-    if mortar_type in ("ALMContactFrictionlessComponents", "ComponentsMeshTying"):
-        return vector
-    if mortar_type.startswith("ALMContactFrictional"):
-        return vector
-    return []
-
-
-def check_mortar_type(contact: Parameters) -> str:
-    """The validated ``mortar_type``. Raises InputError for an unknown or empty value."""
+    Raises:
+        InputError: an unknown or empty value (the accepted ones come from the table).
+    """
     mortar_type = contact["mortar_type"].GetString()
     if mortar_type not in MORTAR_TYPES:
         raise error(
@@ -202,7 +149,7 @@ def check_mortar_type(contact: Parameters) -> str:
             "one of " + ", ".join(f'"{t}"' for t in MORTAR_TYPES),
             suggest(mortar_type, list(MORTAR_TYPES)) or "name the contact formulation",
         )
-    return mortar_type
+    return MORTAR_TYPES[mortar_type]
 
 
 def contact_status(
@@ -263,7 +210,7 @@ class ContactSolverMixin(SolverMixinBase):
         contact = self.settings["contact_settings"]
         convert_legacy_keys(contact, "contact_settings")  # frictional_contact_*_tolerance
         contact.RecursivelyValidateAndAssignDefaults(CONTACT_SETTINGS_DEFAULTS)
-        self.mortar_type = check_mortar_type(contact)
+        self.mortar = check_mortar_type(contact)
         # split_factor, max_number_splits, ... were range-checked by the defaults validation.
         # Pairs appear and disappear between steps: the DoF set is rebuilt every step.
         self._forced.Apply(self.settings)
@@ -296,11 +243,11 @@ class ContactSolverMixin(SolverMixinBase):
     def AddVariables(self) -> None:
         """Structural variables plus those of the mortar_type."""
         super().AddVariables()
-        for variable in mortar_variables(self.mortar_type):
+        for variable in self.mortar.nodal_variables:
             self.main_model_part.AddNodalSolutionStepVariable(variable)
 
     def _DofsWithReactions(self) -> list[tuple[Any, Any]]:
-        return super()._DofsWithReactions() + mortar_dofs(self.mortar_type)
+        return super()._DofsWithReactions() + self.mortar.dofs
 
     def _CreateLinearSolver(self) -> Any:
         """The multiplier solver in the static condensation of a linear bulk.
@@ -333,12 +280,10 @@ class ContactSolverMixin(SolverMixinBase):
         """The structural linear solver, wrapped in the condensing solver for vector multipliers."""
         solver = super()._CreateLinearSolver()
         contact = self.settings["contact_settings"]
-        vector_lm = self.mortar_type == "ALMContactFrictionlessComponents" or (
-            self.mortar_type.startswith("ALMContactFrictional")
-        )
+        alm = self.mortar.method == "ALM"
+        vector_lm = alm and len(self.mortar.dofs) > 1  # the multipliers by components
         # The iterative route condenses every ALM family (scalar normal multipliers too): an AMG
         # needs a displacement-sized system (docs/theory/condensation.md).
-        alm = self.mortar_type.startswith("ALMContact")
         iterative = is_iterative(self.settings["linear_solver_settings"])
         condensed = vector_lm or (alm and iterative)
         if not (condensed and contact["use_mixed_ulm_solver"].GetBool()):
@@ -355,7 +300,7 @@ class ContactSolverMixin(SolverMixinBase):
         return ca.MixedULMLinearSolver(solver)
 
     def _CreateConvergenceCriterion(self) -> ConvergenceCriterion:
-        return CreateContactConvergenceCriterion(self.settings, self.mortar_type)
+        return CreateContactConvergenceCriterion(self.settings, self.mortar)
 
     def _CreateSolutionStrategy(self) -> Any:
         settings = self.settings

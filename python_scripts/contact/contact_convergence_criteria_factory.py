@@ -23,24 +23,13 @@ from __future__ import annotations
 from typing import Any
 
 import contact_app as ca
+from contact_app._core import MortarType
 from contact_app.analysis.solvers.convergence_criteria_factory import (
     CONTACT_CRITERIA,
     ConvergenceCriterion,
     CreateConvergenceCriterion,
 )
 from contact_app.parameters import Parameters
-
-MORTAR_FAMILIES = {
-    "ALMContactFrictionless": "ALM_FRICTIONLESS",
-    "ALMContactFrictionlessComponents": "ALM_FRICTIONLESS_COMPONENTS",
-    "ALMContactFrictional": "ALM_FRICTIONAL",
-    "ALMContactFrictionalPureSlip": "ALM_FRICTIONAL",
-    "PenaltyContactFrictionless": "PENALTY_FRICTIONLESS",
-    "PenaltyContactFrictional": "PENALTY_FRICTIONAL",
-    "PenaltyContactFrictionalPureSlip": "PENALTY_FRICTIONAL",
-    "ScalarMeshTying": "MESH_TYING",
-    "ComponentsMeshTying": "MESH_TYING",
-}
 
 
 class BlockView:
@@ -79,23 +68,20 @@ def _tolerances(settings: Parameters, measure: str, frictional: bool) -> Any:
     return tolerances
 
 
-def _mortar_criterion(mortar_type: str) -> Any:
-    family = getattr(ca.BaseMortarConvergenceCriteria.Family, MORTAR_FAMILIES[mortar_type])
-    return ca.BaseMortarConvergenceCriteria(family, pure_slip="PureSlip" in mortar_type)
-
-
 def CreateContactConvergenceCriterion(
-    settings: Parameters, mortar_type: str
+    settings: Parameters, mortar_type: MortarType
 ) -> ConvergenceCriterion:
     """The criterion of a contact solver: the user's one AND the mortar (active-set) one.
 
     Args:
         settings: ``solver_settings`` with ``contact_settings`` (defaults assigned).
-        mortar_type: the validated formulation.
+        mortar_type: the validated formulation (its criterion family, friction, pure slip).
     """
     name = settings["convergence_criterion"].GetString()
     echo_level = settings["echo_level"].GetInt()
-    mortar = _mortar_criterion(mortar_type)
+    mortar = ca.BaseMortarConvergenceCriteria(
+        mortar_type.criterion, pure_slip=mortar_type.pure_slip
+    )
     mortar.SetEchoLevel(echo_level)
     if name not in CONTACT_CRITERIA:
         structural = CreateConvergenceCriterion(settings)
@@ -104,7 +90,7 @@ def CreateContactConvergenceCriterion(
             combined, residual=structural.residual, displacement=structural.displacement
         )
     contact = settings["contact_settings"]
-    frictional = "Frictional" in mortar_type and contact["frictional_decomposed"].GetBool()
+    frictional = mortar_type.frictional and contact["frictional_decomposed"].GetBool()
     increment, residual = ca.ContactBlockMeasure.INCREMENT, ca.ContactBlockMeasure.RESIDUAL
 
     def make(disp: Any, lm: Any, measure: str) -> Any:

@@ -12,7 +12,7 @@ from typing import Any
 import contact_app as ca
 from contact_app.parameters import Parameters
 
-from ._pairs import fail, pair_block
+from ._pairs import MORTAR_TYPES, fail, pair_block
 from .search_base_process import SEARCH_PARAMETERS_DEFAULTS, SearchBaseProcess, base_defaults
 
 
@@ -75,15 +75,14 @@ class MeshTyingProcess(SearchBaseProcess):
             )
         self.variable_name = name
         self.scalar = variable.Type() == "Double"
+        self.mortar = MORTAR_TYPES["ScalarMeshTying" if self.scalar else "ComponentsMeshTying"]
         super().__init__(model, settings, "mesh_tying_model_part", "mesh_tying_property_ids")
 
     def _required_variables(self) -> list[tuple[Any, str]]:
-        if self.scalar:
-            return [(ca.SCALAR_LAGRANGE_MULTIPLIER, "ScalarMeshTying")]
-        return [(ca.VECTOR_LAGRANGE_MULTIPLIER, "ComponentsMeshTying")]
+        return [(self.mortar.multiplier, self.mortar.name)]
 
     def _get_condition_name(self) -> str:
-        return "MeshTyingMortar"
+        return self.mortar.ConditionName(False, False)
 
     def _initialize_search_conditions(self) -> None:
         for properties in self.pair_properties.values():

@@ -47,19 +47,6 @@ class PenaltyContactProcess(ALMContactProcess):
     def _defaults(cls) -> dict[str, Any]:
         return penalty_defaults()
 
-    def _contact_types(self) -> tuple[str, ...]:
-        return ("Frictionless", "Frictional", "FrictionalPureSlip")
-
-    def _mortar_type(self) -> str:
-        return "PenaltyContact" + self.contact_type
-
-    def _required_variables(self) -> list[tuple[Any, str]]:
-        mortar = self._mortar_type()
-        required = [(ca.WEIGHTED_GAP, mortar), (ca.NORMAL, mortar)]
-        if self.is_frictional:
-            required.append((ca.WEIGHTED_SLIP, mortar))
-        return required
-
     def _initialize_problem_parameters(self) -> None:
         info = self.main_model_part.ProcessInfo
         alm = self.settings["advance_ALM_parameters"]
