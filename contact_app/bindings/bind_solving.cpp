@@ -168,6 +168,9 @@ void BindBuilders(py::module_& m) {
                 timings["solve"] = t.solve;
                 timings["builds"] = t.builds;
                 timings["solves"] = t.solves;
+                timings["scatter"] = t.scatter;
+                timings["residual"] = t.residual;
+                timings["residual_builds"] = t.residual_builds;
                 return timings;
             },
             "Seconds spent in setup (DoFs, graph), build (assembly) and solve, and the call counts.")

@@ -14,10 +14,13 @@ namespace contact_app {
 
 /// Wall-clock seconds spent in each phase since construction (or ResetTimings).
 struct BuilderAndSolverTimings {
-    double setup = 0.0;   ///< DoF set, numbering and sparsity graph
-    double build = 0.0;   ///< assembly of A and b (BuildRHS included)
-    double solve = 0.0;   ///< the linear solves
-    std::size_t builds = 0;
+    double setup = 0.0;     ///< DoF set, numbering and sparsity graph
+    double build = 0.0;     ///< assembly of A and b (RHS-only assemblies included: BuildRHS, reactions)
+    double solve = 0.0;     ///< the linear solves
+    double scatter = 0.0;   ///< of build: adding the local systems into A and b
+    double residual = 0.0;  ///< of build: the RHS-only assemblies
+    std::size_t builds = 0;           ///< LHS + RHS builds
+    std::size_t residual_builds = 0;  ///< RHS-only assemblies (BuildRHS, reactions)
     std::size_t solves = 0;
 };
 
@@ -50,7 +53,7 @@ public:
     /// Assembles A and b from every assembled element and condition.
     virtual void Build(Scheme& rScheme, ModelPart& rModelPart, SparseMatrixType& rA, SystemVectorType& rB);
     virtual void BuildLHS(Scheme& rScheme, ModelPart& rModelPart, SparseMatrixType& rA);
-    /// Assembles b only and zeroes its fixed-DoF entries (what residual criteria read).
+    /// Assembles b only (no local LHS is computed) and zeroes its fixed-DoF entries (what residual criteria read).
     virtual void BuildRHS(Scheme& rScheme, ModelPart& rModelPart, SystemVectorType& rB);
     /// Applies the master–slave constraints of the model part (no-op without constraints).
     virtual void ApplyConstraints(Scheme& rScheme, ModelPart& rModelPart, SparseMatrixType& rA, SystemVectorType& rB);
@@ -91,9 +94,11 @@ public:
     const std::vector<AssemblyContributor::Pointer>& AssemblyContributors() const { return mContributors; }
 
 protected:
-    /// Adds a local system into the global one; ids ≥ the system size are skipped.
-    void Assemble(SparseMatrixType* pA, SystemVectorType* pB, const Matrix* pLHS, const Vector* pRHS,
-                  const EquationIdVectorType& rIds);
+    /// Adds the local systems of every assembled element and condition into @p pA and/or @p pB (null: not built),
+    /// equation ids ≥ @p size skipped; evaluated in parallel, summed in entity order (bit-identical for any thread
+    /// count, docs/architecture.md "Threading model"). @throws the first failing entity's exception.
+    void AssembleEntities(Scheme& rScheme, ModelPart& rModelPart, SparseMatrixType* pA, SystemVectorType* pB,
+                          std::size_t size);
     /// Assembles the full residual of every DoF id < @p size into @p rResidual (no Dirichlet, no constraints).
     void AssembleResidual(Scheme& rScheme, ModelPart& rModelPart, SystemVectorType& rResidual, std::size_t size);
 
