@@ -34,7 +34,8 @@ constexpr std::array<Spelling<CheckGap>, 3> kCheckGaps{{
 }};
 
 template <class TEnum, std::size_t N>
-TEnum Parse(const std::array<Spelling<TEnum>, N>& table, const std::string& name, const char* key) {
+TEnum Parse(const std::array<Spelling<TEnum>, N>& table, const std::string& name, const char* key,
+            const std::string& where) {
     std::vector<std::string> valid;
     for (const auto& row : table) {
         if (name == row.python || name == row.cpp) return row.value;
@@ -42,7 +43,7 @@ TEnum Parse(const std::array<Spelling<TEnum>, N>& table, const std::string& name
         valid.emplace_back(row.cpp);
     }
     CONTACT_THROW(InputError, "contact search: unknown ", key, " \"", name, "\"",
-                  "\n  where:    search_parameters › ", key, "\n  expected: one of ", QuotedList(valid),
+                  "\n  where:    ", where, " › ", key, "\n  expected: one of ", QuotedList(valid),
                   DidYouMean(name, valid));
 }
 
@@ -55,15 +56,19 @@ std::string Name(const std::array<Spelling<TEnum>, N>& table, TEnum value) {
 
 }  // namespace
 
-SearchTreeType ParseSearchTreeType(const std::string& name) { return Parse(kSearchTypes, name, "type_search"); }
-CheckGap ParseCheckGap(const std::string& name) { return Parse(kCheckGaps, name, "check_gap"); }
+SearchTreeType ParseSearchTreeType(const std::string& name, const std::string& where) {
+    return Parse(kSearchTypes, name, "type_search", where);
+}
+CheckGap ParseCheckGap(const std::string& name, const std::string& where) {
+    return Parse(kCheckGaps, name, "check_gap", where);
+}
 std::string SearchTreeTypeName(SearchTreeType type) { return Name(kSearchTypes, type); }
 std::string CheckGapName(CheckGap check) { return Name(kCheckGaps, check); }
 
-void ContactSearchSettings::Validate() const {
-    const auto positive = [](bool ok, const char* key, auto value, const char* expected) {
+void ContactSearchSettings::Validate(const std::string& where) const {
+    const auto positive = [&where](bool ok, const char* key, auto value, const char* expected) {
         CONTACT_CHECK(ok, InputError, "contact search: ", key, " = ", value, " is out of range",
-                      "\n  where:    search_parameters › ", key, "\n  expected: ", expected);
+                      "\n  where:    ", where, " › ", key, "\n  expected: ", expected);
     };
     positive(allocation_size > 0, "allocation_size", allocation_size, "≥ 1 (the maximum candidates per face)");
     positive(bucket_size > 0, "bucket_size", bucket_size, "≥ 1 (points per tree leaf, default 4)");
@@ -73,7 +78,7 @@ void ContactSearchSettings::Validate() const {
     positive(bounding_box_factor >= 0.0, "bounding_box_factor", bounding_box_factor, "≥ 0 (default 0.1)");
     CONTACT_CHECK(OBB_intersection_type == "SeparatingAxisTheorem", InputError,
                   "contact search: OBB_intersection_type \"", OBB_intersection_type, "\" is not supported",
-                  "\n  where:    search_parameters › octree_search_parameters › OBB_intersection_type",
+                  "\n  where:    ", where, " › octree_search_parameters › OBB_intersection_type",
                   "\n  expected: \"SeparatingAxisTheorem\"");
 }
 

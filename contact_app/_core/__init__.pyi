@@ -2917,9 +2917,9 @@ class ContactSearchSettings:
     simple_search: bool
     static_check_movement: bool
     @staticmethod
-    def from_dict(values: dict) -> ContactSearchSettings:
+    def from_dict(values: dict, where: str = '') -> ContactSearchSettings:
         """
-        Settings from a dict; unknown keys raise InputError.
+        Settings from a dict or a search_parameters block (max_number_results, octree_search_parameters); unknown keys, wrong types and values out of range raise InputError, located at where.
         """
     def Validate(self) -> None:
         """

@@ -3,6 +3,8 @@
 #include <map>
 #include <string>
 #include <tuple>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <pybind11/stl.h>
@@ -19,73 +21,68 @@ namespace contact_app::bindings {
 
 namespace {
 
-using Setter = std::function<void(ContactSearchSettings&, const py::handle&)>;
+using Setter = std::function<void(ContactSearchSettings&, const py::handle&, const std::string& where)>;
 
+/// A settings value from Python: the enums from their spellings (ParseSearchTreeType, ParseCheckGap).
 template <class T>
-Setter Field(T ContactSearchSettings::*member) {
-    return [member](ContactSearchSettings& settings, const py::handle& value) { settings.*member = value.cast<T>(); };
+T FromPython(const py::handle& value, const std::string& where) {
+    if constexpr (std::is_same_v<T, SearchTreeType>)
+        return ParseSearchTreeType(value.cast<std::string>(), where);
+    else if constexpr (std::is_same_v<T, CheckGap>)
+        return ParseCheckGap(value.cast<std::string>(), where);
+    else
+        return value.cast<T>();
 }
 
-/// Every settings key (docs/theory/contact_search.md §5) and how to store it; the octree keys may also come nested in
-/// "octree_search_parameters".
+/// Every settings key (ForEachSearchSetting) and how to store it.
 const std::map<std::string, Setter>& SettingsKeys() {
-    static const std::map<std::string, Setter> keys = {
-        {"allocation_size", Field(&ContactSearchSettings::allocation_size)},
-        {"bucket_size", Field(&ContactSearchSettings::bucket_size)},
-        {"search_factor", Field(&ContactSearchSettings::search_factor)},
-        {"type_search", [](ContactSearchSettings& s, const py::handle& v) { s.type_search = ParseSearchTreeType(v.cast<std::string>()); }},
-        {"check_gap", [](ContactSearchSettings& s, const py::handle& v) { s.check_gap = ParseCheckGap(v.cast<std::string>()); }},
-        {"simple_search", Field(&ContactSearchSettings::simple_search)},
-        {"condition_name", Field(&ContactSearchSettings::condition_name)},
-        {"final_string", Field(&ContactSearchSettings::final_string)},
-        {"id_name", Field(&ContactSearchSettings::id_name)},
-        {"inverted_search", Field(&ContactSearchSettings::inverted_search)},
-        {"dynamic_search", Field(&ContactSearchSettings::dynamic_search)},
-        {"static_check_movement", Field(&ContactSearchSettings::static_check_movement)},
-        {"predefined_master_slave", Field(&ContactSearchSettings::predefined_master_slave)},
-        {"normal_orientation_threshold", Field(&ContactSearchSettings::normal_orientation_threshold)},
-        {"consider_gap_threshold", Field(&ContactSearchSettings::consider_gap_threshold)},
-        {"predict_correct_lagrange_multiplier", Field(&ContactSearchSettings::predict_correct_lagrange_multiplier)},
-        {"pure_slip", Field(&ContactSearchSettings::pure_slip)},
-        {"debug_mode", Field(&ContactSearchSettings::debug_mode)},
-        {"bounding_box_factor", Field(&ContactSearchSettings::bounding_box_factor)},
-        {"debug_obb", Field(&ContactSearchSettings::debug_obb)},
-        {"OBB_intersection_type", Field(&ContactSearchSettings::OBB_intersection_type)},
-        {"build_from_bounding_box", Field(&ContactSearchSettings::build_from_bounding_box)},
-        {"lower_bounding_box_coefficient", Field(&ContactSearchSettings::lower_bounding_box_coefficient)},
-        {"higher_bounding_box_coefficient", Field(&ContactSearchSettings::higher_bounding_box_coefficient)},
-    };
+    static const std::map<std::string, Setter> keys = [] {
+        std::map<std::string, Setter> result;
+        ForEachSearchSetting([&](const char* key, auto member) {
+            using T = std::remove_reference_t<decltype(std::declval<ContactSearchSettings&>().*member)>;
+            result[key] = [member](ContactSearchSettings& settings, const py::handle& value, const std::string& where) {
+                settings.*member = FromPython<T>(value, where);
+            };
+        });
+        return result;
+    }();
     return keys;
 }
 
-void Assign(ContactSearchSettings& settings, const py::dict& values, const std::string& where) {
+/// Assigns @p values (keys of SettingsKeys; "max_number_results" for allocation_size; the octree keys also nested in
+/// "octree_search_parameters"). @p where: the JSON path of the block, for the messages.
+void Assign(ContactSearchSettings& settings, const py::dict& values, const std::string& where, bool nested = false) {
     const auto& keys = SettingsKeys();
     for (const auto& [key_handle, value] : values) {
-        const std::string key = py::str(key_handle);
-        if (key == "octree_search_parameters" && where.empty()) {
-            Assign(settings, value.cast<py::dict>(), "octree_search_parameters › ");
+        const std::string written = py::str(key_handle);
+        if (written == "octree_search_parameters" && !nested) {
+            Assign(settings, value.cast<py::dict>(), where + " › octree_search_parameters", true);
             continue;
         }
+        const std::string key = written == "max_number_results" ? "allocation_size" : written;
         const auto found = keys.find(key);
         if (found == keys.end()) {
             std::vector<std::string> names;
             for (const auto& entry : keys) names.push_back(entry.first);
-            CONTACT_THROW(InputError, "ContactSearchSettings: unknown key \"", key, "\"\n  where:    search_parameters › ",
-                          where, key, "\n  expected: one of ", QuotedList(names), DidYouMean(key, names));
+            CONTACT_THROW(InputError, "ContactSearchSettings: unknown key \"", key, "\"\n  where:    ", where, " › ", key,
+                          "\n  expected: one of ", QuotedList(names), DidYouMean(key, names));
         }
         try {
-            found->second(settings, value);
+            found->second(settings, value, where);
         } catch (const py::cast_error&) {
-            CONTACT_THROW(InputError, "ContactSearchSettings: key \"", key, "\" has the wrong type (got ",
-                          std::string(py::str(value.get_type())), ": ", std::string(py::repr(value)), ")");
+            CONTACT_THROW(InputError, "ContactSearchSettings: key \"", written, "\" has the wrong type (got ",
+                          std::string(py::str(value.get_type())), ": ", std::string(py::repr(value)), ")",
+                          "\n  where:    ", where, " › ", written);
         }
     }
-    settings.Validate();
 }
 
-ContactSearchSettings FromDict(const py::dict& values) {
+/// Defaults overridden by @p values, validated; @p where names the block in the messages.
+ContactSearchSettings FromDict(const py::dict& values, const std::string& where) {
+    const std::string block = where.empty() ? "search_parameters" : where;
     ContactSearchSettings settings;
-    Assign(settings, values, "");
+    Assign(settings, values, block);
+    settings.Validate(block);
     return settings;
 }
 
@@ -146,42 +143,28 @@ void BindContactSearch(py::module_& m) {
     py::class_<ContactSearchSettings> settings(m, "ContactSearchSettings",
                                                "Settings of the contact search (Kratos search_parameters keys).");
     settings
-        .def(py::init([](const py::kwargs& kwargs) { return FromDict(kwargs); }),
+        .def(py::init([](const py::kwargs& kwargs) { return FromDict(kwargs, ""); }),
              "Defaults, overridden by keyword arguments (unknown keys raise InputError).")
-        .def_static("from_dict", &FromDict, py::arg("values"), "Settings from a dict; unknown keys raise InputError.")
-        .def_property(
-            "type_search", [](const ContactSearchSettings& s) { return SearchTreeTypeName(s.type_search); },
-            [](ContactSearchSettings& s, const std::string& v) { s.type_search = ParseSearchTreeType(v); },
-            "in_radius, in_box, in_radius_with_obb, in_box_with_obb, octree_with_obb (or InRadius, ...).")
-        .def_property(
-            "check_gap", [](const ContactSearchSettings& s) { return CheckGapName(s.check_gap); },
-            [](ContactSearchSettings& s, const std::string& v) { s.check_gap = ParseCheckGap(v); },
-            "no_check, direct_check, check_mapping (or NoCheck, DirectCheck, MappingCheck).")
-        .def("Validate", &ContactSearchSettings::Validate, "InputError for out-of-range values.");
-#define CONTACT_APP_SETTINGS_FIELD(name) settings.def_readwrite(#name, &ContactSearchSettings::name);
-    CONTACT_APP_SETTINGS_FIELD(allocation_size)
-    CONTACT_APP_SETTINGS_FIELD(bucket_size)
-    CONTACT_APP_SETTINGS_FIELD(search_factor)
-    CONTACT_APP_SETTINGS_FIELD(simple_search)
-    CONTACT_APP_SETTINGS_FIELD(condition_name)
-    CONTACT_APP_SETTINGS_FIELD(final_string)
-    CONTACT_APP_SETTINGS_FIELD(id_name)
-    CONTACT_APP_SETTINGS_FIELD(inverted_search)
-    CONTACT_APP_SETTINGS_FIELD(dynamic_search)
-    CONTACT_APP_SETTINGS_FIELD(static_check_movement)
-    CONTACT_APP_SETTINGS_FIELD(predefined_master_slave)
-    CONTACT_APP_SETTINGS_FIELD(normal_orientation_threshold)
-    CONTACT_APP_SETTINGS_FIELD(consider_gap_threshold)
-    CONTACT_APP_SETTINGS_FIELD(predict_correct_lagrange_multiplier)
-    CONTACT_APP_SETTINGS_FIELD(pure_slip)
-    CONTACT_APP_SETTINGS_FIELD(debug_mode)
-    CONTACT_APP_SETTINGS_FIELD(bounding_box_factor)
-    CONTACT_APP_SETTINGS_FIELD(debug_obb)
-    CONTACT_APP_SETTINGS_FIELD(OBB_intersection_type)
-    CONTACT_APP_SETTINGS_FIELD(build_from_bounding_box)
-    CONTACT_APP_SETTINGS_FIELD(lower_bounding_box_coefficient)
-    CONTACT_APP_SETTINGS_FIELD(higher_bounding_box_coefficient)
-#undef CONTACT_APP_SETTINGS_FIELD
+        .def_static("from_dict", &FromDict, py::arg("values"), py::arg("where") = "",
+                    "Settings from a dict or a search_parameters block (max_number_results, octree_search_parameters); "
+                    "unknown keys, wrong types and values out of range raise InputError, located at where.")
+        .def(
+            "Validate", [](const ContactSearchSettings& self) { self.Validate(); }, "InputError for out-of-range values.");
+    ForEachSearchSetting([&](const char* key, auto member) {
+        using T = std::remove_reference_t<decltype(std::declval<ContactSearchSettings&>().*member)>;
+        if constexpr (std::is_same_v<T, SearchTreeType>)
+            settings.def_property(
+                key, [member](const ContactSearchSettings& s) { return SearchTreeTypeName(s.*member); },
+                [member](ContactSearchSettings& s, const std::string& v) { s.*member = ParseSearchTreeType(v); },
+                "in_radius, in_box, in_radius_with_obb, in_box_with_obb, octree_with_obb (or InRadius, ...).");
+        else if constexpr (std::is_same_v<T, CheckGap>)
+            settings.def_property(
+                key, [member](const ContactSearchSettings& s) { return CheckGapName(s.*member); },
+                [member](ContactSearchSettings& s, const std::string& v) { s.*member = ParseCheckGap(v); },
+                "no_check, direct_check, check_mapping (or NoCheck, DirectCheck, MappingCheck).");
+        else
+            settings.def_readwrite(key, member);
+    });
 
     BindSearch(m);
     py::class_<MPCContactSearchProcess, ContactSearchProcess>(

@@ -18,7 +18,7 @@ from typing import Any
 import contact_app as ca
 from contact_app import _core
 from contact_app.model_part_lookup import get_model_part
-from contact_app.parameters import Parameters, suggest
+from contact_app.parameters import Parameters
 from contact_app.processes.interval import Interval
 from contact_app.processes.process import Process
 
@@ -53,30 +53,9 @@ SEARCH_PARAMETERS_DEFAULTS: dict[str, Any] = {
     },
 }
 
-TYPE_SEARCH_VALUES = (
-    "in_radius",
-    "in_box",
-    "in_radius_with_obb",
-    "in_box_with_obb",
-    "octree_with_obb",
-)
-CHECK_GAP_VALUES = ("no_check", "direct_check", "check_mapping")
-
-#: Keys of ``search_parameters`` handed to the C++ search unchanged (Python name → C++ field).
-FORWARDED_SEARCH_KEYS = {
-    "simple_search": "simple_search",
-    "type_search": "type_search",
-    "check_gap": "check_gap",
-    "bucket_size": "bucket_size",
-    "search_factor": "search_factor",
-    "dynamic_search": "dynamic_search",
-    "static_check_movement": "static_check_movement",
-    "consider_gap_threshold": "consider_gap_threshold",
-    "normal_orientation_threshold": "normal_orientation_threshold",
-    "debug_mode": "debug_mode",
-    "predict_correct_lagrange_multiplier": "predict_correct_lagrange_multiplier",
-    "max_number_results": "allocation_size",
-}
+#: ``search_parameters`` keys the process reads itself; every other key goes to the C++ search
+#: (``ContactSearchSettings.from_dict``, which validates them: names, types, ranges, spellings).
+PROCESS_SEARCH_KEYS = ("adapt_search", "active_check_factor", "database_step_update")
 
 
 def base_defaults(interface_key: str, property_key: str) -> dict[str, Any]:
@@ -165,16 +144,10 @@ class SearchBaseProcess(Process):
 
     def _check_search_parameters(self) -> None:
         search = self.search_settings
-        for key, valid in (("type_search", TYPE_SEARCH_VALUES), ("check_gap", CHECK_GAP_VALUES)):
-            value = search[key].GetString()
-            if value not in valid:
-                raise fail(
-                    search,
-                    key,
-                    f'unknown {key} "{value}"',
-                    "one of " + ", ".join(f'"{v}"' for v in valid),
-                    suggest(value, list(valid)),
-                )
+        self.search_values = {
+            key: value.GetValue() for key, value in search.items() if key not in PROCESS_SEARCH_KEYS
+        }
+        _core.ContactSearchSettings.from_dict(self.search_values, search.Where())
         if search["adapt_search"].GetBool():
             raise fail(
                 search,
@@ -546,25 +519,18 @@ class SearchBaseProcess(Process):
         return f"{master_nodes}N" if master_nodes and slave_nodes != master_nodes else ""
 
     def _search_settings_for(self, key: str) -> dict[str, Any]:
-        search = self.search_settings
         values: dict[str, Any] = {
+            **self.search_values,
             "condition_name": self._get_condition_name(),
             "final_string": self._get_final_string(key),
             "predefined_master_slave": self._predefined(key),
             "id_name": key,
         }
-        for name, field in FORWARDED_SEARCH_KEYS.items():
-            values[field] = search[name].GetValue()
-        octree = search["octree_search_parameters"]
-        values["bounding_box_factor"] = octree["bounding_box_factor"].GetDouble()
-        values["build_from_bounding_box"] = octree["build_from_bounding_box"].GetBool()
         self._set_additional_parameters(values)
         return values
 
     def _create_search(self, key: str, resume: bool = False) -> Any:
-        settings = _core.ContactSearchSettings()
-        for field, value in self._search_settings_for(key).items():
-            if not hasattr(settings, field):
-                raise ca.InternalError(f"ContactSearchSettings has no field {field!r}")
-            setattr(settings, field, value)
+        settings = _core.ContactSearchSettings.from_dict(
+            self._search_settings_for(key), self.search_settings.Where()
+        )
         return self._create_search_process(settings, self.pair_properties[key], resume)
