@@ -305,14 +305,18 @@ def test_press_fit_2d_slides_with_coulomb_friction_where_the_reference_does_not(
 
 
 @pytest.mark.slow
-def test_press_fit_2d_goes_past_where_the_reference_gives_up() -> None:
-    """The reference stops at t = 0.6415 (UpdatedLagrangian element 57 inverted); ours goes on."""
+def test_press_fit_2d_runs_to_its_end_where_the_reference_gives_up() -> None:
+    """The reference stops at t = 0.6415 (UpdatedLagrangian element 57 inverted); ours runs the
+    model's whole history (end_time 1.3: 360 steps of 1e-3, then 1880 of 5e-4) without cutting a
+    step, 4-9 Newton iterations per step (12,464 in all, 24 s on the quiet machine)."""
     fixture = _fixture("press_fit_2d")
     assert fixture["failure"] is not None and "INVERTED" in " ".join(fixture["failure"]["message"])
-    until = 0.66
-    history, _, failure = _ours("press_fit_2d", until)
+    end_time = common.raw_parameters("press_fit_2d")["problem_data"]["end_time"]
+    history, _, failure = _ours("press_fit_2d", end_time)
     assert failure is None and all(step["converged"] for step in history)
-    assert history[-1]["time"] == pytest.approx(until)
+    assert history[-1]["time"] == pytest.approx(end_time)
+    assert len(history) == 360 + 1880  # the model's own steps: none was cut
+    assert max(step["iterations"] for step in history) <= 10
 
 
 @pytest.mark.parametrize(
