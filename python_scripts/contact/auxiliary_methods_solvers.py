@@ -11,7 +11,11 @@ import logging
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+from numpy.typing import NDArray
+
 import contact_app as ca
+from contact_app import _core
 from contact_app._core import MortarType
 from contact_app.analysis.paths import PathResolver
 from contact_app.analysis.solvers.convergence_criteria_factory import (
@@ -153,34 +157,45 @@ def check_mortar_type(contact: Parameters) -> MortarType:
 
 
 def contact_status(
-    main: ca.ModelPart, frictional: bool, area: Callable[[Any], float]
+    main: ca.ModelPart, frictional: bool, area: Callable[[NDArray[np.int64]], NDArray[np.float64]]
 ) -> tuple[int, int, int, float]:
     """(active slave nodes, slipping ones, live pairs, max penetration) of the "Contact" part.
+
+    Read with the bulk accessors of ``_core`` (one call per flag or variable): a Python loop over
+    the contact nodes cost ~1 ms per step, 6 % of a small 2D model's run.
 
     Args:
         main: the main model part (with "Contact" and "ComputingContact" children).
         frictional: count the SLIP nodes (frictionless runs leave SLIP set without meaning).
-        area: the nodal area A a node's WEIGHTED_GAP is divided by (penetration = −g̃ / A).
+        area: the nodal areas A of the given node ids, each node's WEIGHTED_GAP is divided by
+            (penetration = -g / A).
     """
     if not main.HasSubModelPart("Contact"):
         return (0, 0, 0, 0.0)
-    has_gap = main.HasNodalSolutionStepVariable(ca.WEIGHTED_GAP)
-    active = slip = 0
+    part = main.GetSubModelPart("Contact")
+    ids = _core.BulkNodeIds(part)
+    in_contact = (_core.BulkNodalFlags(part, ids, ca.SLAVE) > 0.0) & (
+        _core.BulkNodalFlags(part, ids, ca.ACTIVE) > 0.0
+    )
+    active_ids = ids[in_contact]
+    slip = 0
+    if frictional:
+        slip = int(np.count_nonzero(_core.BulkNodalFlags(part, active_ids, ca.SLIP)))
     penetration = 0.0
-    for node in main.GetSubModelPart("Contact").Nodes:
-        if not (node.Is(ca.SLAVE) and node.Is(ca.ACTIVE)):
-            continue
-        active += 1
-        slip += int(frictional and node.Is(ca.SLIP))
-        nodal_area = area(node)
-        if has_gap and nodal_area > 0.0:
-            penetration = max(penetration, -node.GetSolutionStepValue(ca.WEIGHTED_GAP) / nodal_area)
+    if main.HasNodalSolutionStepVariable(ca.WEIGHTED_GAP) and active_ids.size > 0:
+        gaps = _core.BulkNodalValues(part, active_ids, ca.WEIGHTED_GAP, True)[0][:, 0]
+        areas = area(active_ids)
+        covered = areas > 0.0
+        if np.any(covered):
+            penetration = max(0.0, float(np.max(-gaps[covered] / areas[covered])))
     pairs = 0
     if main.HasSubModelPart("ComputingContact"):
-        for condition in main.GetSubModelPart("ComputingContact").Conditions:
-            if condition.Is(ca.ACTIVE) and not condition.Is(ca.ISOLATED):
-                pairs += 1
-    return (active, slip, pairs, penetration)
+        computing = main.GetSubModelPart("ComputingContact")
+        live = (_core.BulkEntityFlags(computing, False, ca.ACTIVE) > 0.0) & ~(
+            _core.BulkEntityFlags(computing, False, ca.ISOLATED) > 0.0
+        )
+        pairs = int(np.count_nonzero(live))
+    return (int(active_ids.size), slip, pairs, penetration)
 
 
 class ContactSolverMixin(SolverMixinBase):
@@ -378,7 +393,12 @@ class ContactSolverMixin(SolverMixinBase):
                     for node in geometry:
                         areas[node.Id] = areas.get(node.Id, 0.0) + share
             self._slave_areas = areas
-        return contact_status(main, contact.Is(ca.SLIP), lambda n: self._slave_areas.get(n.Id, 0.0))
+        areas = self._slave_areas
+        return contact_status(
+            main,
+            contact.Is(ca.SLIP),
+            lambda ids: np.array([areas.get(int(i), 0.0) for i in ids], dtype=float),
+        )
 
     def FinalizeSolutionStep(self) -> None:
         """Finalize the step; with ``ensure_contact`` a step without contact is an error."""

@@ -13,6 +13,7 @@ import logging
 from typing import Any
 
 import contact_app as ca
+from contact_app import _core
 from contact_app.analysis.paths import PathResolver
 from contact_app.analysis.solvers.convergence_criteria_factory import (
     ConvergenceCriterion,
@@ -185,8 +186,12 @@ class MPCContactSolverMixin(SolverMixinBase):
 
         The penetration divides WEIGHTED_GAP by the lumped slave area NODAL_MAUX of the criterion.
         """
+        main = self.main_model_part
+        if not main.HasSubModelPart("Contact"):
+            return (0, 0, 0, 0.0)
+        contact = main.GetSubModelPart("Contact")
         return contact_status(
-            self.main_model_part,
+            main,
             self.contact_type == "Frictional",
-            lambda n: n.GetValue(ca.NODAL_MAUX) if n.Has(ca.NODAL_MAUX) else 0.0,
+            lambda ids: _core.BulkNodalValues(contact, ids, ca.NODAL_MAUX, False)[0][:, 0],
         )
