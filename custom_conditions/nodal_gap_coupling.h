@@ -2,12 +2,12 @@
 #pragma once
 /// The part of a penalty pair's tangent that a pair-wise assembly cannot hold (docs/theory/mortar.md §7 "Nodal
 /// penalty"). A penalty pair c pushes slave node j with ε X_j, X_j = η_j G_j: G_j = Σ_d g̃^d_j the node's weighted gap
-/// over all its pairs and η_j = Σ_d (a^d_j)² / (Σ_d a^d_j)² (held constant by the tangent), so its residual depends on
+/// over all its pairs and η_j = Σ_d (a^d_j)² / (Σ_d a^d_j)² (both differentiated), so its residual depends on
 /// the unknowns of every other pair d of the node:
 ///   ∂RHS^c/∂q_d = b^c_j (∂X_j/∂q_d)ᵀ,   b^c_j = ∂RHS^c/∂X_j.
 /// A slipping node of the frictional family also takes its direction from the transmitted slip
-/// T_j = Σ_d a^d_j s^d_j / A_j (A_j = NODAL_AREA held constant, as η), which adds
-///   ∂RHS^c/∂q_d = B^c_j ∂T_j/∂q_d,   B^c_j = ∂RHS^c/∂T_j (n_dof × d),   ∂T_j/∂q_d = ∂(a^d_j s^d_j)/∂q_d / A_j.
+/// T_j = Σ_d a^d_j s^d_j / A_j (A_j = NODAL_AREA = Σ_d a^d_j differentiated too), which adds
+///   ∂RHS^c/∂q_d = B^c_j ∂T_j/∂q_d,   B^c_j = ∂RHS^c/∂T_j (n_dof × d),   ∂T_j/∂q_d = (∂(a^d_j s^d_j) − T_j ∂a^d_j)/∂q_d / A_j.
 /// The pair's own local tangent holds the d = c blocks; NodalPenaltyCoupling (custom_strategies/) adds the others.
 #include <array>
 
@@ -21,10 +21,10 @@ namespace contact_app {
 /// DoF order (its EquationIdVector).
 struct NodalGapCouplingTerms {
     Vector force_per_gap;   ///< b = ∂RHS/∂X_j (RHS the force on the bodies)
-    Vector gap_gradient;    ///< ∂X_j/∂q in this pair's unknowns (η ∂g̃_j/∂q)
+    Vector gap_gradient;    ///< ∂X_j/∂q in this pair's unknowns (η ∂g̃_j/∂q + G ∂η/∂a_j ∂a_j/∂q)
     bool slipping = false;  ///< whether the two slip terms below are set
     Matrix force_per_slip;  ///< B = ∂RHS/∂T_j (n_dof × d)
-    Matrix slip_gradient;   ///< ∂T_j/∂q in this pair's unknowns (d × n_dof): ∂(a_j s_j)/∂q / A_j
+    Matrix slip_gradient;   ///< ∂T_j/∂q in this pair's unknowns (d × n_dof): (∂(a_j s_j) − T ∂a_j)/∂q / A_j
 };
 
 /// A pair condition whose residual reads the nodal penalty gap X = η G of its slave nodes (and the transmitted slip T).

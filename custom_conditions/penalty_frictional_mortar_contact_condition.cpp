@@ -27,7 +27,7 @@ void AddPenaltyFrictionalResidual(const TState& s, const FrictionalParameters<TD
         if (!p.nodal.active[j]) continue;
         const double eps = p.nodal.penalty[j];
         const double dynamic_factor = p.nodal.dynamic_factor[j];
-        const T gap = nodal.PenaltyGap(j, PairGap<T, TDim>(s, j));
+        const T gap = nodal.PenaltyGap(j, PairGap<T, TDim>(s, j), PairArea<T>(s, j));
         const T pressure = eps * gap;  // λ̄ < 0 in contact
         const Vec n = s.normals.row(j).transpose();
         const Vec carried = ProjectTangent<T, TDim>(s, j, Vec(elastic_slip.row(j).transpose().template cast<T>()));

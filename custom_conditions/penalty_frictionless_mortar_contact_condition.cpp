@@ -12,14 +12,15 @@ using namespace frictionless_detail;
 
 /// RHS of one pair, q = [u2 (d·n_m), u1 (d·n_s)]: S_j[δ_j ε_j η_j G_j n_j] on the active nodes, nothing on the
 /// inactive ones; G_j is the node's weighted gap over all its pairs (this pair's part varying) and η_j = Σ_c a_c² / A_j²
-/// (held constant; NodalInterfaceMap::PenaltyGap, docs/theory/mortar.md §7 "Nodal penalty"). In the AD pass @p record
-/// keeps b_j = S_j[δ ε n_j] and this pair's ∂(ηG)_j/∂q for the other pairs' tangent blocks (nodal_gap_coupling.h).
+/// (this pair's area varying: NodalInterfaceMap::PenaltyGap, docs/theory/mortar.md §7 "Nodal penalty"). In the AD pass
+/// @p record keeps b_j = S_j[δ ε n_j] and this pair's ∂(ηG)_j/∂q for the other pairs' tangent blocks
+/// (nodal_gap_coupling.h).
 template <class T, int TDim, int TNS, int TNM, class TState, class TVector, class TRecord>
 void AddPenaltyFrictionlessResidual(const TState& s, const NodalParameters<TNS>& p,
                                     const NodalInterfaceMap<TDim, TNS>& nodal, TVector& rhs, TRecord* record) {
     for (int j = 0; j < TNS; ++j) {
         if (!p.active[j]) continue;
-        const T gap = nodal.PenaltyGap(j, PairGap<T, TDim>(s, j));
+        const T gap = nodal.PenaltyGap(j, PairGap<T, TDim>(s, j), PairArea<T>(s, j));
         const double stiffness = p.dynamic_factor[j] * p.penalty[j];
         SpreadNormalForce<T, TDim, TNS, TNM>(s, j, T(stiffness * gap), rhs);
         if constexpr (!std::is_same_v<T, double>) {
