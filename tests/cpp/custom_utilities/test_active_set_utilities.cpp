@@ -180,6 +180,32 @@ TEST(ActiveSetUtilities, test_penalty_frictional_stick_slip_with_consistent_orie
     EXPECT_LT((stick.GetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE) - Array3(0.5, 0, 0)).norm(), 1e-15);
 }
 
+TEST(ActiveSetUtilities, test_penalty_slip_that_reverses_against_its_build_direction_sticks) {
+    // λ̄n = 10·(−0.1) = −1, μ = 0.5: bound 0.5; trial κ ε ũτ = 10 ũτ. TANGENT_XI: the direction the build slipped along.
+    ActiveSetModel m;
+    Node& reversing = m.Add(-0.1, true, true);
+    reversing.FastGetSolutionStepValue(WEIGHTED_SLIP) = Array3(-0.2, 0, 0);  // |trial| 2 > 0.5, but against +x
+    Node& continuing = m.Add(-0.1, true, true);
+    continuing.FastGetSolutionStepValue(WEIGHTED_SLIP) = Array3(0.2, 0, 0);
+    for (Node* node : {&reversing, &continuing}) {
+        node->SetValue(FRICTION_COEFFICIENT, 0.5);
+        node->SetValue(TANGENT_XI, Array3(1, 0, 0));
+    }
+    auto flips = ActiveSetUtilities::ComputePenaltyFrictionalActiveSet(*m.root);
+    EXPECT_EQ(flips[0], 0u);
+    EXPECT_EQ(flips[1], 1u);  // the reversing node tries stick, the overshoot lies between the two directions
+    EXPECT_FALSE(reversing.Is(SLIP));
+    EXPECT_LT((reversing.GetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE) - Array3(-2, 0, 0)).norm(), 1e-15);
+    EXPECT_TRUE(continuing.Is(SLIP));
+    // From stick it slips the other way at the next update (the build's direction is now −x).
+    reversing.SetValue(TANGENT_XI, Array3(-1, 0, 0));
+    flips = ActiveSetUtilities::ComputePenaltyFrictionalActiveSet(*m.root);
+    EXPECT_EQ(flips[1], 1u);
+    EXPECT_TRUE(reversing.Is(SLIP));
+    EXPECT_LT((reversing.GetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE) - Array3(-0.5, 0, 0)).norm(), 1e-15);
+    EXPECT_EQ(ActiveSetUtilities::ComputePenaltyFrictionalActiveSet(*m.root)[1], 0u);
+}
+
 TEST(ActiveSetUtilities, test_penalty_node_opening_within_the_iterate_motion_is_held_and_counted) {
     // release_gap = 1e-3 (the largest correction of the iterate); mean gaps G/A with A = 0.5, λ̄ = ε G (η = 1).
     ActiveSetModel m;
