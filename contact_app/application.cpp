@@ -1,18 +1,24 @@
 // SPDX-License-Identifier: BSD-3-Clause
+// The top of the package: every registration, below it nothing registers anything else.
 #include "contact_app/application.h"
 
 #include "contact_app/kernel/registry.h"
 #include "contact_app/structural/structural_registration.h"
+#include "custom_conditions/contact_condition_registration.h"
+#include "custom_strategies/contact_master_slave_constraint.h"
+#include "custom_utilities/contact_restart_codecs.h"
+#include "custom_utilities/contact_variables.h"
 
 namespace contact_app {
-
-CONTACT_APP_CONTACT_VARIABLES(CONTACT_APP_DEFINE_VARIABLE)
-CONTACT_APP_CONTACT_ARRAY3_VARIABLES(CONTACT_APP_DEFINE_ARRAY3_VARIABLE)
 
 void RegisterContactApplication() {
     RegisterKernelVariables();
     RegisterKernelEntities();
     RegisterStructuralMechanics();
+    RegisterContactVariables();
+    RegisterContactConditions();
+    RegisterContactMasterSlaveConstraints();
+    RegisterContactRestartCodecs();
 }
 
 }  // namespace contact_app

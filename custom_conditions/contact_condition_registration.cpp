@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "contact_app/kernel/geometries/geometry_factory.h"
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/registry.h"
 #include "contact_app/kernel/variables.h"
 #include "custom_conditions/alm_frictionless_components_mortar_contact_condition.h"

@@ -10,7 +10,7 @@
 #include <Eigen/Core>
 
 #include "automatic_differentiation/ad_helpers.h"
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
 #include "custom_conditions/mortar_contact_condition.h"
 #include "custom_utilities/mortar_explicit_contribution.h"

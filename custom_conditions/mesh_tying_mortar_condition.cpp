@@ -4,7 +4,7 @@
 #include <sstream>
 #include <utility>
 
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/serializer.h"
 #include "contact_app/kernel/variable_registry.h"

@@ -2,7 +2,7 @@
 #include "custom_conditions/mortar_contact_condition.h"
 
 #include "automatic_differentiation/ad_helpers.h"
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
 #include "custom_conditions/mortar_pair_settings.h"
 #include "custom_utilities/mortar_geometry_adapters.h"

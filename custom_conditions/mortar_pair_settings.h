@@ -4,7 +4,7 @@
 /// INTEGRATION_ORDER_CONTACT, CONSIDER_TESSELLATION from the Properties; DISTANCE_THRESHOLD, ZERO_TOLERANCE_FACTOR
 /// from the ProcessInfo (MortarContactCondition adds the axisymmetric thickness). Internal to custom_conditions/.
 
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/process_info.h"
 #include "contact_app/kernel/properties.h"
 #include "custom_utilities/mortar_types.h"

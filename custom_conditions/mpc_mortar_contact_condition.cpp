@@ -7,7 +7,7 @@
 
 #include <Eigen/LU>
 
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/master_slave_constraint.h"
 #include "contact_app/kernel/serializer.h"

@@ -3,7 +3,7 @@
 
 #include <sstream>
 
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/geometries/coupling_geometry.h"
 #include "contact_app/kernel/serializer.h"

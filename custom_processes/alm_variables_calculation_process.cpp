@@ -7,7 +7,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/element.h"
 #include "contact_app/kernel/model_part.h"

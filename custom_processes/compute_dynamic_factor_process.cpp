@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/model_part.h"
 

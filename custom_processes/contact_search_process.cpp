@@ -11,7 +11,7 @@
 
 #include <Eigen/Geometry>
 
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/registry.h"
 #include "custom_conditions/paired_condition.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_processes/mpc_contact_search_process.h"
 
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/registry.h"
 

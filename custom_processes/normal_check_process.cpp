@@ -6,7 +6,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/face_checks.h"
 #include "contact_app/kernel/model_part.h"

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <unordered_map>
 
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/solving/builder_and_solvers/builder_and_solver.h"
 #include "contact_app/solving/convergence_criteria/round_off_bound.h"

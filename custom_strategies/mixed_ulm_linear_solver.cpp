@@ -5,7 +5,7 @@
 #include <cmath>
 #include <map>
 
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/dof.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/model_part.h"

@@ -6,7 +6,7 @@
 #include <limits>
 #include <sstream>
 
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
 #include "custom_conditions/paired_condition.h"
 #include "custom_processes/aalm_adapt_penalty_value_process.h"

@@ -6,7 +6,7 @@
 #include <iomanip>
 #include <sstream>
 
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
 #include "custom_utilities/contact_utilities.h"
 

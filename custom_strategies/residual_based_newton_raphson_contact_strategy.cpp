@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
 #include "custom_strategies/mortar_convergence_criteria.h"
 #include "custom_strategies/nodal_penalty_coupling.h"

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
 #include "custom_conditions/paired_condition.h"
 #include "custom_utilities/contact_utilities.h"

@@ -5,7 +5,7 @@
 #include <cstring>
 #include <string>
 
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/restart_pointer_codecs.h"
 #include "custom_utilities/index_map.h"

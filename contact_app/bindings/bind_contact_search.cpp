@@ -9,7 +9,7 @@
 
 #include <pybind11/stl.h>
 
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/bindings/bindings.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/string_utilities.h"

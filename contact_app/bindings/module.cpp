@@ -2,9 +2,6 @@
 #include <pybind11/pybind11.h>
 
 #include "contact_app/application.h"
-#include "custom_conditions/contact_condition_registration.h"
-#include "custom_strategies/contact_master_slave_constraint.h"
-#include "custom_utilities/contact_restart_codecs.h"
 #include "contact_app/bindings/bindings.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/inverted_element_error.h"
@@ -65,9 +62,6 @@ PYBIND11_MODULE(_core, m) {
     using namespace contact_app::bindings;
     m.doc() = "Compiled core of contact_app (private: import contact_app instead).";
     contact_app::RegisterContactApplication();
-    contact_app::RegisterContactConditions();  // not in RegisterContactApplication: avoids a library cycle
-    contact_app::RegisterContactMasterSlaveConstraints();
-    contact_app::RegisterContactRestartCodecs();
     BindExceptions(m);
     BindVariables(m);
     BindFlags(m);

@@ -12,6 +12,7 @@
 #include <typeinfo>
 
 #include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/io/model_part_io.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/model.h"

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/geometries/geometry_factory.h"
 #include "contact_app/kernel/model.h"
 #include "contact_app/kernel/registry.h"

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/model.h"
 #include "contact_app/kernel/registry.h"
 #include "custom_conditions/contact_condition_registration.h"

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/io/model_part_io.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/model.h"

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/model.h"
 #include "custom_processes/penetration_check.h"
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/model.h"
 #include "contact_app/solving/builder_and_solvers/block_builder_and_solver.h"
 #include "contact_app/solving/linear_solvers/linear_solver_factory.h"

@@ -4,6 +4,7 @@
 /// the frictional stick/slip test (forces compared with forces) and the output variables.
 #include <gtest/gtest.h>
 
+#include "contact_app/application.h"
 #include "contact_app/solving/builder_and_solvers/elimination_builder_and_solver.h"
 #include "contact_app/solving/linear_solvers/linear_solver_factory.h"
 #include "custom_conditions/mpc_mortar_contact_condition.h"

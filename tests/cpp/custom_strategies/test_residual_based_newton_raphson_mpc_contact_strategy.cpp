@@ -4,6 +4,7 @@
 /// reduced system of slipping nodes against the Coulomb equilibrium and its central differences.
 #include <gtest/gtest.h>
 
+#include "contact_app/application.h"
 #include "contact_app/kernel/constitutive_law.h"
 #include "contact_app/solving/builder_and_solvers/elimination_builder_and_solver.h"
 #include "contact_app/solving/convergence_criteria/composite_criteria.h"

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/model.h"
 #include "custom_utilities/active_set_utilities.h"

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/model.h"
 #include "custom_utilities/active_set_utilities.h"

@@ -4,6 +4,7 @@
 
 #include "automatic_differentiation/ad_helpers.h"
 #include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/model.h"
 #include "contact_app/kernel/variables.h"
 #include "custom_utilities/mortar_normals.h"

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/io/model_part_checkpoint.h"
 #include "contact_app/kernel/constitutive_law.h"
 #include "contact_app/kernel/model.h"

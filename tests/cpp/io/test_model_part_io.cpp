@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 
 #include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/io/model_part_io.h"
 #include "contact_app/kernel/model.h"
 #include "contact_app/kernel/registry.h"

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/face_checks.h"
 #include "contact_app/kernel/model.h"
 

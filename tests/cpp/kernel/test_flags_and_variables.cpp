@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/entity_container.h"
 #include "contact_app/kernel/flags.h"
 #include "contact_app/kernel/node.h"

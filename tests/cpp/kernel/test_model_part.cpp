@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/model.h"
 #include "contact_app/kernel/registry.h"
 #include "contact_app/kernel/variables.h"

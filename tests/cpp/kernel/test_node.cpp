@@ -2,7 +2,7 @@
 // Node: historical buffer, non-historical values, DoFs and their error messages.
 #include <gtest/gtest.h>
 
-#include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/model.h"
 #include "contact_app/kernel/variables.h"
 

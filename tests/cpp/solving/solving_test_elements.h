@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/element.h"
 #include "contact_app/kernel/geometries/geometry_factory.h"
 #include "contact_app/kernel/model.h"

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/model.h"
 #include "contact_app/kernel/variables.h"

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/constitutive_law.h"
 #include "contact_app/kernel/model.h"
 #include "contact_app/kernel/registry.h"

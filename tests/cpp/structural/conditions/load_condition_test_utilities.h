@@ -9,6 +9,7 @@
 #include <Eigen/Dense>
 
 #include "contact_app/application.h"
+#include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/model.h"
 #include "contact_app/kernel/variables.h"
 #include "contact_app/structural/structural_registration.h"
