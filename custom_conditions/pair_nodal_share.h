@@ -3,6 +3,8 @@
 /// A pair's part of the nodal interface sums, and the map that rebuilds the nodal quantities from it inside one pair
 /// (docs/theory/mortar.md §7 "Nodal laws in a pair-wise assembly"). Internal to custom_conditions/.
 
+#include <array>
+
 #include <Eigen/Core>
 
 #include "custom_utilities/contact_variables.h"
@@ -54,36 +56,39 @@ struct NodalInterfaceMap {
     T TransmittedGap(int j, const T& pair_gap) const {
         return pair_gap + gap_offset[j];
     }
+    std::array<bool, TNumNodes> shared{};  ///< whether node j has a valid share (else the pair's own g̃, s)
     Eigen::Matrix<double, TNumNodes, 1> nodal_gap_offset = Eigen::Matrix<double, TNumNodes, 1>::Zero();  ///< G − g̃⁰
-    Eigen::Matrix<double, TNumNodes, 1> penalty_share = Eigen::Matrix<double, TNumNodes, 1>::Ones();  ///< η = Σa²/A²
-    /// η_j Ĝ_j, the gap a penalty node is pushed with (λ̄ = ε η G, docs/theory/mortar.md §7 "Nodal penalty"), as a
-    /// function of this pair's weighted gap g̃_j: Ĝ = G + g̃ − g̃⁰. Its derivative is this pair's part of η ∂G; the
-    /// other pairs' parts enter the tangent through the nodal coupling (nodal_gap_coupling.h). η is held constant by
-    /// the tangent (measured: with its derivative the ironing example's pressing steps cycle their active set).
-    /// Without a valid share: the pair's own g̃ (η = 1).
+    Eigen::Matrix<double, TNumNodes, 1> area_offset = Eigen::Matrix<double, TNumNodes, 1>::Zero();       ///< A − a⁰
+    Eigen::Matrix<double, TNumNodes, 1> squared_area_offset =
+        Eigen::Matrix<double, TNumNodes, 1>::Zero();  ///< Σ_c (a^c)² − (a⁰)²
+    /// η̂_j Ĝ_j, the gap a penalty node is pushed with (λ̄ = ε η G, docs/theory/mortar.md §7 "Nodal penalty"), as a
+    /// function of this pair's weighted gap g̃_j and area a_j: Ĝ = G + g̃ − g̃⁰, η̂ = (Σ_c (a^c)² + a² − (a⁰)²) /
+    /// (A + a − a⁰)². Its derivative is this pair's part of ∂(ηG), η's included; the other pairs' parts enter the
+    /// tangent through the nodal coupling (nodal_gap_coupling.h). Without a valid share: the pair's own g̃ (η = 1).
     template <class T>
-    T PenaltyGap(int j, const T& pair_gap) const {
-        return (pair_gap + nodal_gap_offset[j]) * penalty_share[j];
+    T PenaltyGap(int j, const T& pair_gap, const T& pair_area) const {
+        const T gap = pair_gap + nodal_gap_offset[j];
+        if (!shared[j] || area_offset[j] == 0.0) return gap;  // this pair alone: η = 1
+        const T area = pair_area + area_offset[j];
+        return gap * (pair_area * pair_area + squared_area_offset[j]) / (area * area);
     }
-    Eigen::Matrix<double, TNumNodes, TDim> transmitted_slip_offset =
-        Eigen::Matrix<double, TNumNodes, TDim>::Zero();  ///< T − ω s⁰
-    Eigen::Matrix<double, TNumNodes, 1> inverse_nodal_area =
-        Eigen::Matrix<double, TNumNodes, 1>::Zero();  ///< 1/A, 0 without a valid share
+    Eigen::Matrix<double, TNumNodes, TDim> weighted_slip_offset =
+        Eigen::Matrix<double, TNumNodes, TDim>::Zero();  ///< Σ_c a^c s^c − a⁰ s⁰ (AREA_WEIGHTED_PAIR_SLIP − a⁰ s⁰)
 
     template <class T>
     Eigen::Matrix<T, TDim, 1> Slip(int j, const Eigen::Matrix<T, TDim, 1>& pair_slip) const {
         return pair_slip / weight[j] + slip_offset.row(j).transpose().template cast<T>();
     }
-    /// T̂_j(q) = T_j + (a_j(q) s_j(q) − a_j⁰ s_j⁰) / A_j: the slip the pairs' penalty stick rows transmit
-    /// (Σ_c a^c s^c / A), with this pair's area and slip varying and A = NODAL_AREA held constant, as η is
+    /// T̂_j(q) = (Σ_c a^c s^c + a_j(q) s_j(q) − a_j⁰ s_j⁰) / (A_j + a_j(q) − a_j⁰): the slip the pairs' penalty stick rows
+    /// transmit (Σ_c a^c s^c / A), with this pair's area and slip varying, in the numerator and in A = NODAL_AREA
     /// (docs/theory/mortar.md §7 "Nodal penalty"). Its derivative is this pair's part of ∂T; the other pairs' parts
     /// enter the tangent through the nodal coupling (nodal_gap_coupling.h). Without a valid share: the pair's own s.
     template <class T>
     Eigen::Matrix<T, TDim, 1> TransmittedSlip(int j, const T& pair_area,
                                               const Eigen::Matrix<T, TDim, 1>& pair_slip) const {
-        if (inverse_nodal_area[j] == 0.0) return pair_slip;
-        return pair_slip * (pair_area * inverse_nodal_area[j]) +
-               transmitted_slip_offset.row(j).transpose().template cast<T>();
+        if (!shared[j] || area_offset[j] == 0.0) return pair_slip;  // this pair alone: T = s
+        return (pair_slip * pair_area + weighted_slip_offset.row(j).transpose().template cast<T>()) /
+               (pair_area + area_offset[j]);
     }
 };
 
@@ -100,15 +105,16 @@ NodalInterfaceMap<TDim, TNumNodes> MakeNodalInterfaceMap(const Geometry& slave,
         if (!(share.area[j] > 0.0) || !(total_area >= share.area[j] * (1.0 - 1e-12))) continue;
         map.weight[j] = share.area[j] / total_area;
         map.gap_offset[j] = ContactUtilities::TransmittedWeightedGap(node) - share.gap[j];
+        map.shared[j] = true;
         map.nodal_gap_offset[j] = node.FastGetSolutionStepValue(WEIGHTED_GAP) - share.gap[j];
-        map.penalty_share[j] = ContactUtilities::PenaltyShare(node);
+        map.area_offset[j] = total_area - share.area[j];
+        map.squared_area_offset[j] = node.GetValue(SQUARED_PAIR_AREA) - share.area[j] * share.area[j];
         if (frictional) {
             map.slip_offset.row(j) = node.FastGetSolutionStepValue(WEIGHTED_SLIP).template head<TDim>().transpose() -
                                      share.slip.row(j) / map.weight[j];
-            map.transmitted_slip_offset.row(j) =
-                ContactUtilities::TransmittedWeightedSlip(node).template head<TDim>().transpose() -
-                share.slip.row(j) * map.weight[j];
-            map.inverse_nodal_area[j] = 1.0 / total_area;
+            map.weighted_slip_offset.row(j) =
+                node.GetValue(AREA_WEIGHTED_PAIR_SLIP).template head<TDim>().transpose() -
+                share.slip.row(j) * share.area[j];
         }
     }
     return map;

@@ -161,6 +161,13 @@ bool Turned(const Node& node, const Array3& direction, double bound, double larg
            (previous / previous.norm() - direction).norm() * bound > kSlipDirectionTolerance * largest_bound;
 }
 
+/// Whether a slip node's trial direction @p direction points against the one the build slipped along (TANGENT_XI, set
+/// before it): the slip force of the build overshot, so the iterate crossed the stick cone, which lies between the two
+/// directions. The penalty set then tries stick (docs/theory/active_set.md §3).
+bool Reversed(const Node& node, const Array3& direction) {
+    return node.Has(TANGENT_XI) && node.GetValue(TANGENT_XI).dot(direction) < 0.0;
+}
+
 /// Raises a slipping node's SLIP_TRIAL_FACTOR f when the iteration turned its direction by more than the slip law's
 /// linearisation covers: the trial k Pλ + f ε Pũτ resists a rotation θ only through f ε|Pũτ|, so its tangent holds
 /// for θ ≲ θ_f = √(2 f ε|Pũτ| / μ|λ̄n|). A turn θ > θ_f (from the build's TANGENT_XI to @p direction) sets f so that
@@ -273,7 +280,8 @@ std::array<std::size_t, 2> ComputePenaltyFrictionalActiveSet(ModelPart& model_pa
         const double mu = node->GetValue(FRICTION_COEFFICIENT);
         const Array3 trial = TrialTangentialTraction(*node, process_info, false);
         const bool was_slip = node->Is(SLIP);
-        const bool slip = pure_slip || trial.norm() > -mu * transmitted_normal;
+        const bool slip = pure_slip || (trial.norm() > -mu * transmitted_normal &&
+                                        !(was_slip && Reversed(*node, Direction(trial))));
         // Slip traction along the trial, as the stick one (the reference flips its sign: [BUG?] B10).
         node->SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE,
                        slip ? Array3(-mu * transmitted_normal * Direction(trial)) : trial);
