@@ -64,6 +64,7 @@ public:
     CONTACT_APP_AD_INLINE Dual(double value) noexcept : mValue(value) {
         SetZero();
     }  // NOLINT(google-explicit-constructor)
+    /// @param[in] value the primal value v
     /// @param[in] gradient any Eigen expression of size N (evaluated once, directly into the member)
     template <class TDerived>
     Dual(double value, const Eigen::MatrixBase<TDerived>& gradient) : mValue(value) {

@@ -38,6 +38,7 @@ public:
     /// Lets the next step recompute the previous operators.
     void FinalizeSolutionStep(const ProcessInfo& rCurrentProcessInfo) override;
     /// @param[out] rResult [master DISPLACEMENT_*, slave DISPLACEMENT_*, slave VECTOR_LAGRANGE_MULTIPLIER_*]
+    /// @param[in] rCurrentProcessInfo handed on to GetDofList (not read)
     void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
     void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
     /// Σ_i s_i 3^i, s_i = 0 inactive, 1 active-slip, 2 active-stick.

@@ -31,6 +31,7 @@ public:
     Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
                               Geometry::Pointer master) const override;
     /// @param[out] rResult [master DISPLACEMENT_*, slave DISPLACEMENT_*, slave VECTOR_LAGRANGE_MULTIPLIER_*]
+    /// @param[in] rCurrentProcessInfo handed on to GetDofList (not read)
     /// @throws InputError if a DoF is missing
     void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
     void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;

@@ -38,6 +38,7 @@ public:
     /// @throws InputError for an unknown variable or one that is neither double nor a 3-vector
     void Initialize(const ProcessInfo& rCurrentProcessInfo) override;
     /// @param[out] rLeftHandSideMatrix, rRightHandSideVector dof_size·(2 n_s + n_m); zero for a deactivated pair
+    /// @param[in] rCurrentProcessInfo SCALE_FACTOR (else BUILD_SCALE_FACTOR, else 1) scales the multiplier rows
     void CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
                               const ProcessInfo& rCurrentProcessInfo) override;
     void CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) override;

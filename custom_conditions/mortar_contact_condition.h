@@ -67,7 +67,10 @@ public:
 
     /// Resets ISOLATED and the nodal share (the search rebuilt the pair).
     void Initialize(const ProcessInfo& rCurrentProcessInfo) override;
-    /// @param[out] rLeftHandSideMatrix MatrixSize², −∂RHS/∂q; @param[out] rRightHandSideVector MatrixSize
+    /// @param[out] rLeftHandSideMatrix MatrixSize², −∂RHS/∂q
+    /// @param[out] rRightHandSideVector MatrixSize
+    /// @param[in] rCurrentProcessInfo the family's factors (SCALE_FACTOR, TANGENT_FACTOR, ...) and the
+    ///            segmentation tolerances (DISTANCE_THRESHOLD, ZERO_TOLERANCE_FACTOR)
     void CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
                               const ProcessInfo& rCurrentProcessInfo) override;
     void CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) override;

@@ -12,9 +12,14 @@ namespace contact_app {
 /// (NO_DERIVATIVES_COMPUTATION), in InitializeNonLinearIteration. Names and sizes: docs/registered_conditions.md.
 class PairedCondition : public Condition {
 public:
+    /// @param[in] id condition Id
     /// @param[in] geometry a CouplingGeometry {slave, master} or a bare slave face (shared, not null)
+    /// @param[in] properties shared with the model part; may be null until the materials are assigned
     PairedCondition(IndexType id, Geometry::Pointer geometry, Properties::Pointer properties = nullptr);
-    /// @param[in] slave slave face; @param[in] master master face (may be null: unpaired condition)
+    /// @param[in] id condition Id
+    /// @param[in] slave slave face (shared, not null)
+    /// @param[in] properties shared with the model part; may be null until the materials are assigned
+    /// @param[in] master master face (shared; may be null: unpaired condition)
     PairedCondition(IndexType id, Geometry::Pointer slave, Properties::Pointer properties, Geometry::Pointer master);
 
     /// The prototype's slave geometry type on @p nodes, without master (Check() then fails).

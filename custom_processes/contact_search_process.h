@@ -17,11 +17,11 @@ namespace contact_app {
 class IndexMap;
 
 /// The mortar contact search (Kratos AdvancedContactSearchProcess; `simple_search` = SimpleContactSearchProcess;
-/// docs/theory/contact_search.md). Each step: nodal mean normals of <main>.Contact[.ContactSub<id>]; a kd-tree over
+/// docs/theory/contact_search.md). Each step: nodal mean normals of `<main>.Contact[.ContactSub<id>]`; a kd-tree over
 /// the master face centres; per slave face the candidates in a radius / box (+ OBB filter), checked (not itself,
 /// opposite orientation, not yet paired, no reciprocal pair); INDEX_MAP of the slave face records master id →
 /// pair condition id; pair conditions `<condition_name>Condition<d>D<n>N<final_string>` from Registry<Condition> go
-/// to <main>.ComputingContact[.ComputingContactSub<id>]. Activation: NoCheck (all), DirectCheck (projection
+/// to `<main>.ComputingContact[.ComputingContactSub<id>]`. Activation: NoCheck (all), DirectCheck (projection
 /// within ACTIVE_CHECK_FACTOR·NODAL_H) or MappingCheck (NORMAL_GAP by projecting each slave node along its
 /// nodal normal onto its masters — a direct projection instead of the reference's mortar mapper).
 /// Pairs survive between steps while ACTIVE. Role: slave faces are those with SLAVE == !inverted.

@@ -12,6 +12,7 @@ enum class SearchTreeType { InRadius, InBox, InRadiusWithOBB, InBoxWithOBB, Octr
 enum class CheckGap { NoCheck, DirectCheck, MappingCheck };
 
 /// @brief SearchTreeType from its Python ("in_radius", ...) or C++ ("InRadius", ...) spelling.
+/// @param[in] name the spelling to decode
 /// @param[in] where the settings block, for the message (a JSON path)
 /// @throws InputError listing the valid spellings (no silent fallback, unlike the reference)
 SearchTreeType ParseSearchTreeType(const std::string& name, const std::string& where = "search_parameters");

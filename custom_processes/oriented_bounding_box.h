@@ -20,6 +20,9 @@ public:
     OrientedBoundingBox(const Geometry& face, double thickness);
     /// @brief A box from its centre, orthonormal axes and half-lengths (tests, debugging).
     /// @param[in] dim 2 (axes 0,1 in the xy plane) or 3
+    /// @param[in] center centre of the box
+    /// @param[in] axes three orthonormal axes (in 2D the third is e_z and is never tested)
+    /// @param[in] half_lengths half-length along each axis (≥ 0; in 2D the third is set to 0)
     OrientedBoundingBox(int dim, const Array3& center, const std::array<Array3, 3>& axes, const Array3& half_lengths);
 
     /// @brief Separating axis theorem: true unless some axis separates the boxes strictly. 2D: the 4 box axes;

@@ -33,6 +33,7 @@ struct PenetratingNode {
 /// is behind that face (t < 0) and the node normal opposes the face normal.
 /// @param[in] nodes slave nodes (NORMAL historical, zero taken as opposed)
 /// @param[in] masters master faces with their NORMAL, @p tree built over their centres in this order
+/// @param[in] tree search tree over the centres of @p masters (its indices are positions in @p masters)
 /// @param[in] max_master_radius largest distance from a master face centre to its nodes (> 0)
 /// @param[in] same_body faces for which this is true are not looked at for that node (the node's own surface)
 /// @return the penetrating nodes, in the order of @p nodes

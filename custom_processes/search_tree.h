@@ -25,13 +25,17 @@ public:
     void Build(const std::vector<Array3>& points, std::size_t bucket_size = 4);
 
     /// @brief Indices (into the Build() array) of the points with |p − @p center| ≤ @p radius.
+    /// @param[in] center centre of the search sphere (only the first 3 components)
+    /// @param[in] radius search radius (≥ 0), same length unit as the points
     /// @param[out] results cleared, then filled (unordered)
     /// @param[in] max_results stop after this many (the reference's allocation_size); 0 = no limit
     void SearchInRadius(const Array3& center, double radius, std::vector<std::size_t>& results,
                         std::size_t max_results = 0) const;
 
     /// @brief Indices of the points inside the closed axis-aligned box [@p min_point, @p max_point].
-    /// @param[out] results cleared, then filled (unordered); @param[in] max_results as SearchInRadius
+    /// @param[in] min_point,max_point lowest and highest corner of the box (componentwise min ≤ max)
+    /// @param[out] results cleared, then filled (unordered)
+    /// @param[in] max_results as SearchInRadius
     void SearchInBox(const Array3& min_point, const Array3& max_point, std::vector<std::size_t>& results,
                      std::size_t max_results = 0) const;
 

@@ -13,7 +13,12 @@ namespace contact_app {
 class ContactMasterSlaveConstraint : public LinearMasterSlaveConstraint {
 public:
     ContactMasterSlaveConstraint() = default;
-    /// @param relation slaves × masters; @param constant one entry per slave. @throws InputError on a size mismatch
+    /// @param[in] id constraint Id
+    /// @param[in] master_dofs,slave_dofs the DoFs of u_master and u_slave, in the column / row order of T (owned by
+    ///            their nodes)
+    /// @param[in] relation T, slaves × masters
+    /// @param[in] constant c, one entry per slave
+    /// @throws InputError on a size mismatch
     ContactMasterSlaveConstraint(IndexType id, DofsVectorType master_dofs, DofsVectorType slave_dofs, Matrix relation,
                                  Vector constant);
     /// An empty constraint (no DoFs) waiting for its condition to fill it.

@@ -16,7 +16,12 @@ namespace contact_app {
 /// wrong variable); this is the intended search.
 class LineSearchContactStrategy : public ResidualBasedNewtonRaphsonContactStrategy {
 public:
-    /// @param min_alpha smallest step length (the reference's 1e-3)
+    /// @param[in,out] rModelPart the model part solved; it outlives the strategy
+    /// @param[in] scheme,builder,criteria shared with the caller (not null)
+    /// @param[in] max_iterations Newton iterations per step at most (≥ 1)
+    /// @param[in] settings the solver_settings the strategy reads (reactions, DoF rebuild, mesh motion, echo)
+    /// @param[in] contact_settings the contact_settings of the contact Newton strategy
+    /// @param[in] min_alpha smallest step length (the reference's 1e-3)
     LineSearchContactStrategy(ModelPart& rModelPart, Scheme::Pointer scheme, BuilderAndSolver::Pointer builder,
                               ConvergenceCriteria::Pointer criteria, int max_iterations = 30,
                               StrategySettings settings = {}, ContactStrategySettings contact_settings = {},

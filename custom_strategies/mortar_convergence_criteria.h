@@ -33,7 +33,8 @@ public:
     /// Which set update the family uses (a MortarType's criterion).
     using Family = MortarCriterionFamily;
 
-    /// @param pure_slip frictional families: every active node slips (the slip set is not judged)
+    /// @param[in] family the contact family whose active (and slip) set update is applied
+    /// @param[in] pure_slip frictional families: every active node slips (the slip set is not judged)
     explicit BaseMortarConvergenceCriteria(Family family, bool pure_slip = false);
 
     void InitializeSolutionStep(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,

@@ -48,7 +48,7 @@ public:
     /// Largest change |e_new − e_old| of a slipping node's unit slip direction in the last update (0 if none).
     double LastMaxDirectionTurn() const { return mMaxTurn; }
 
-    /// @brief NODAL_MAUX := Σ over the SLAVE conditions of "Contact" holding the node of |face| / #nodes
+    /// @brief NODAL_MAUX := Σ over the SLAVE conditions of "Contact" holding the node of |face| / (its number of nodes)
     ///        (current configuration), on every node of "Contact". No-op without a "Contact" part.
     static void ComputeLumpedSlaveArea(ModelPart& rModelPart);
 

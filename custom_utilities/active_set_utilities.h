@@ -72,8 +72,11 @@ std::size_t ComputeALMFrictionlessActiveSet(ModelPart& model_part);
 /// @return the number of ACTIVE flips
 std::size_t ComputeALMFrictionlessComponentsActiveSet(ModelPart& model_part);
 /// @brief Penalty frictional: λ̄n = ε g̃; active nodes: λ̄τ = κ ε P(ũτ + e), stick ⇔ |λ̄τ| ≤ −μ λ̄n, slip traction
-///        −μ λ̄n λ̄τ/|λ̄τ|; inactive nodes: ũτ := 0, SLIP reset. @param[in] pure_slip every active node slips
-///        The normal set is the frictionless one with @p release_gap.
+///        −μ λ̄n λ̄τ/|λ̄τ|; inactive nodes: ũτ := 0, SLIP reset. The normal set is the frictionless one with
+///        @p release_gap.
+/// @param[in,out] model_part the contact model part (ProcessInfo: the factors); its SLAVE nodes' flags and tractions
+/// @param[in] pure_slip every active node slips
+/// @param[in] release_gap as in ComputePenaltyFrictionlessActiveSet (0: no hold)
 /// @return {ACTIVE flips and held open nodes, SLIP flips} (slip flips are not counted in pure slip)
 std::array<std::size_t, 2> ComputePenaltyFrictionalActiveSet(ModelPart& model_part, bool pure_slip = false,
                                                              double release_gap = 0.0);
@@ -81,7 +84,8 @@ std::array<std::size_t, 2> ComputePenaltyFrictionalActiveSet(ModelPart& model_pa
 ///        when μ < machine ε); slip ⇔ μ < machine ε (a frictionless node cannot stick) or |λ̄τ| / (−μ λ̄n) >
 ///        1 − SLIP_THRESHOLD (slipping node) or > 1 (sticking node); slip traction −μ λ̄n λ̄τ/|λ̄τ|; inactive nodes:
 ///        ũτ := 0, SLIP reset.
-///        @param[in] pure_slip every active node slips
+/// @param[in,out] model_part the contact model part (ProcessInfo: the factors); its SLAVE nodes' flags and multipliers
+/// @param[in] pure_slip every active node slips
 /// @return {ACTIVE flips, SLIP flips}
 std::array<std::size_t, 2> ComputeALMFrictionalActiveSet(ModelPart& model_part, bool pure_slip = false);
 

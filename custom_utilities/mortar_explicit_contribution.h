@@ -23,7 +23,10 @@ struct ExplicitContributionOptions {
 };
 
 /// @brief g̃_i = −n_i·(D x1 − M x2)_i (the reference's sign: positive = open gap).
-/// @param[in] x1 n_s × d, x2 n_m × d current coordinates; @param[in] normals n_s × d nodal NORMAL
+/// @param[in] operators D (n_s × n_s) and M (n_s × n_m) of the pair in the current configuration
+/// @param[in] x1 n_s × d current slave coordinates
+/// @param[in] x2 n_m × d current master coordinates
+/// @param[in] normals n_s × d nodal NORMAL of the slave nodes
 template <int TDim, int TNumNodes, int TNumNodesMaster, class T, class TNormal>
 Eigen::Matrix<T, TNumNodes, 1> WeightedGap(const MortarOperators<T, TNumNodes, TNumNodesMaster>& operators,
                                           const NodeCoordinates<T, TDim, TNumNodes>& x1,
@@ -33,8 +36,15 @@ Eigen::Matrix<T, TNumNodes, 1> WeightedGap(const MortarOperators<T, TNumNodes, T
 /// @brief Weighted slip increment of the step, Δt·(ṡ_i − (n_i·ṡ_i) n_i), with the slip rate
 ///        objective:     ṡ = [(D − D_prev) x1 − (M − M_prev) x2] / Δt,
 ///        non-objective: ṡ = −[D (x1 − x1_prev) − M (x2 − x2_prev)] / Δt   (signs as the reference).
-/// @param[in] previous operators at the start of the step; @param[in] x1_previous, x2_previous start-of-step
-///            coordinates X0 + u(step−1); @param[in] delta_time Δt (DELTA_TIME, 1 if absent)
+/// @param[in] operators D and M of the pair in the current configuration
+/// @param[in] previous operators at the start of the step
+/// @param[in] x1 n_s × d current slave coordinates
+/// @param[in] x2 n_m × d current master coordinates
+/// @param[in] x1_previous,x2_previous start-of-step coordinates X0 + u(step−1), same shapes as @p x1, @p x2
+/// @param[in] normals n_s × d nodal NORMAL of the slave nodes; the normal part of the rate is removed
+/// @param[in] delta_time Δt (DELTA_TIME, 1 if absent)
+/// @param[in] objective true: the rate from the change of D and M (first formula); false: from the
+///            coordinate increments (second formula)
 template <int TDim, int TNumNodes, int TNumNodesMaster, class T, class TNormal>
 NodeCoordinates<T, TDim, TNumNodes> WeightedSlip(const MortarOperators<T, TNumNodes, TNumNodesMaster>& operators,
                                                  const MortarOperators<double, TNumNodes, TNumNodesMaster>& previous,
@@ -68,7 +78,13 @@ ExplicitMortarContribution<T, TDim, TNumNodes> ComputeExplicitFrictionalMortarCo
     const ExplicitContributionOptions& options);
 
 /// @brief D and M of the pair in the given configuration (dual LM requested), to be stored as the
-///        "previous" operators of the step (a plain copy). @param[out] dual whether Ae succeeded
+///        "previous" operators of the step (a plain copy).
+/// @param[in] integrator the pair's mortar integrator (segmentation and integration settings)
+/// @param[in] x1 n_s × d slave coordinates in that configuration
+/// @param[in] slave_normal d-vector, slave condition normal (the segmentation direction)
+/// @param[in] x2 n_m × d master coordinates in that configuration
+/// @param[in] normals n_s × d unit nodal NORMAL of the slave nodes
+/// @param[out] dual whether Ae succeeded
 /// @return zero operators for an isolated pair
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 MortarOperators<double, TNumNodes, TNumNodesMaster> ComputePreviousMortarOperators(

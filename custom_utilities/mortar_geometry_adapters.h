@@ -9,6 +9,7 @@ namespace contact_app {
 /// @brief Current node coordinates X0 + u (historical DISPLACEMENT; the node's coordinates when it has none) of a
 ///        kernel geometry as the n × d matrix the mortar utilities take; independent of whether the mesh is moved.
 /// @throws InputError if the geometry does not have @p TNumNodes nodes
+/// @param[in] geometry the face whose nodes are read, in its node order
 /// @param[out] mesh_follows if given: false unless the mesh coordinates equal X0 + u at every node (to round-off)
 template <int TDim, int TNumNodes>
 NodeCoordinates<double, TDim, TNumNodes> CurrentCoordinates(const Geometry& geometry, bool* mesh_follows = nullptr);

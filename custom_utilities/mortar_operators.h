@@ -22,6 +22,7 @@ struct MortarGaussPoint {
 /// @brief Gauss rule on one integration cell from INTEGRATION_ORDER_CONTACT (GetIntegrationMethod table):
 ///        orders 1..5 → GAUSS_1..5 (line 1..5 points, triangle 1,3,4,6,7 points), any other value → 2.
 /// @param[in] dim 2 (line cells) or 3 (triangle cells)
+/// @param[in] integration_order_contact the INTEGRATION_ORDER_CONTACT value of the condition's properties
 const std::vector<IntegrationPoint>& MortarCellGaussRule(int dim, int integration_order_contact);
 
 /// Integration of the mortar operators and of the dual basis over the cells of one pair
@@ -44,7 +45,8 @@ public:
         : mSettings(settings), mSegmentation(segmentation) {}
 
     /// @brief Kinematics at every Gauss point of every non-degenerate cell.
-    /// @param[in] slave n_s × d, master n_m × d current coordinates
+    /// @param[in] slave n_s × d current slave coordinates
+    /// @param[in] master n_m × d current master coordinates
     /// @param[in] slave_normal d-vector, slave condition normal (the segmentation direction)
     /// @param[in] nodal_normals n_s × d unit nodal NORMAL of the slave nodes
     /// @param[in] cells cells from ComputeCells on the same data
@@ -83,8 +85,13 @@ struct MortarPairIntegration {
 };
 
 /// @brief Segmentation + isolation rule + (optional) dual basis + D, M for one pair (condition steps 2–4).
-/// @param[in] dual_lm request dual multipliers (falls back to standard ones when Ae fails)
 /// The slave measure of the 1e−5 rule is the face length (2D), area (triangle) or ½|d₁×d₂| (quadrilateral).
+/// @param[in] integrator the pair's mortar integrator (segmentation and integration settings)
+/// @param[in] slave n_s × d current slave coordinates
+/// @param[in] slave_normal d-vector, slave condition normal (the segmentation direction)
+/// @param[in] master n_m × d current master coordinates
+/// @param[in] nodal_normals n_s × d unit nodal NORMAL of the slave nodes
+/// @param[in] dual_lm request dual multipliers (falls back to standard ones when Ae fails)
 template <int TDim, int TNumNodes, int TNumNodesMaster, class T, class TNormal>
 MortarPairIntegration<T, TDim, TNumNodes, TNumNodesMaster> IntegrateMortarPair(
     const MortarIntegrator<TDim, TNumNodes, TNumNodesMaster, T>& integrator,

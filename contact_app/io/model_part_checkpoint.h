@@ -38,6 +38,8 @@ public:
     static std::string Save(const ModelPart& model_part);
     /// @brief Rebuilds the saved model part into @p model_part, an empty root of the same name (variables may
     ///        be declared). Everything is decoded and checked before @p model_part is modified.
+    /// @param[in,out] model_part the empty root model part that receives the checkpoint
+    /// @param[in] bytes the checkpoint bytes, as Save() wrote them
     /// @param[in] source the file name, for messages
     /// @throws InputError naming @p source for a short, corrupt, foreign, other-version or mismatched checkpoint
     static void Load(ModelPart& model_part, const std::string& bytes, const std::string& source);

@@ -18,6 +18,7 @@ public:
     using EquationIdType = std::size_t;
 
     /// @param[in] node      owner (outlives the DoF)
+    /// @param[in] variable  the unknown (DISPLACEMENT_X, a multiplier component, ...), a registered variable
     /// @param[in] reaction  may be nullptr (no reaction variable)
     Dof(Node& node, const Variable<double>& variable, const Variable<double>* reaction)
         : mNode(&node), mVariable(&variable), mReaction(reaction) {}

@@ -27,6 +27,7 @@ public:
     using GeometryType = Geometry;
     using NodesArrayType = Geometry::PointsArrayType;
 
+    /// @param[in] id         element or condition Id (unique in its model part tree)
     /// @param[in] geometry   shared with the model part (not null)
     /// @param[in] properties may be null until the materials are read
     Entity(IndexType id, Geometry::Pointer geometry, Properties::Pointer properties = nullptr);

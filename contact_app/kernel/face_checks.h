@@ -22,6 +22,8 @@ std::string DegenerateFaceReason(const Geometry& geometry);
 std::string ModelPartsHoldingCondition(const ModelPart& model_part, IndexType id);
 
 /// @brief Throws the InputError for a degenerate face condition.
+/// @param[in] condition the degenerate face condition (its Id and node Ids go into the message)
+/// @param[in] model_part a model part of the same tree, to name the model parts that hold @p condition
 /// @param[in] location prefix for the message (`"mesh.mdpa:56: "`), may be empty.
 /// @param[in] reason as returned by DegenerateFaceReason.
 [[noreturn]] void ThrowDegenerateFace(const Condition& condition, const ModelPart& model_part, const std::string& reason,

@@ -9,7 +9,11 @@ namespace contact_app {
 class LinearMasterSlaveConstraint : public MasterSlaveConstraint {
 public:
     LinearMasterSlaveConstraint() = default;
-    /// @param relation slaves × masters; @param constant one entry per slave.
+    /// @param[in] id constraint Id
+    /// @param[in] master_dofs,slave_dofs the DoFs of u_master and u_slave, in the column / row order of T (owned by
+    ///            their nodes)
+    /// @param[in] relation T, slaves × masters
+    /// @param[in] constant c, one entry per slave
     /// @throws InputError if the sizes do not match the DoF counts.
     LinearMasterSlaveConstraint(IndexType id, DofsVectorType master_dofs, DofsVectorType slave_dofs,
                                 Matrix relation, Vector constant);

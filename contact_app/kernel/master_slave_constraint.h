@@ -24,7 +24,12 @@ public:
         : mId(id), mMasterDofs(std::move(master_dofs)), mSlaveDofs(std::move(slave_dofs)) {}
     virtual ~MasterSlaveConstraint() = default;
 
-    /// A new constraint of the same class. @param relation slaves × masters; @param constant one per slave.
+    /// A new constraint of the same class.
+    /// @param[in] id constraint Id
+    /// @param[in] master_dofs,slave_dofs the DoFs of u_master and u_slave, in the column / row order of T (owned by
+    ///            their nodes)
+    /// @param[in] relation T, slaves × masters
+    /// @param[in] constant c, one entry per slave
     /// @throws InputError if the sizes do not match the DoF counts.
     virtual Pointer Create(IndexType id, DofsVectorType master_dofs, DofsVectorType slave_dofs,
                            const Matrix& relation, const Vector& constant) const;

@@ -11,7 +11,8 @@ class CompositeCriteria : public ConvergenceCriteria {
 public:
     enum class Mode { And, Or };
 
-    /// @param first, second shared with the caller (not null)
+    /// @param[in] mode how the two results combine: both converged (And) or either (Or)
+    /// @param[in] first,second the two criteria, shared with the caller (not null)
     CompositeCriteria(Mode mode, ConvergenceCriteria::Pointer first, ConvergenceCriteria::Pointer second);
 
     void Initialize(ModelPart& rModelPart) override;

@@ -37,7 +37,14 @@ public:
                              const SystemVectorType& rDx, const SystemVectorType& rB) {
         return true;
     }
-    /// @return true when converged. @param rB the rebuilt RHS when GetActualizeRHSflag() is true.
+    /// @brief Convergence test after the solution update of one Newton iteration.
+    /// @param[in,out] rModelPart the model part being solved (contact criteria update nodal flags and results on it)
+    /// @param[in] rDofSet the system DoFs (not owned), in the builder's order
+    /// @param[in] rA the system matrix of the iteration
+    /// @param[in] rDx the solution increment of the iteration, one entry per equation
+    /// @param[in] rB the rebuilt RHS when GetActualizeRHSflag() is true, else the RHS the iteration solved with
+    /// @param[in] rBuilder the builder and solver of the system (equation numbering, Dirichlet and constraint rows)
+    /// @return true when converged
     virtual bool PostCriteria(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
                               const SystemVectorType& rDx, const SystemVectorType& rB,
                               const BuilderAndSolver& rBuilder) = 0;

@@ -13,7 +13,9 @@ enum class IterativeSolverKind { ConjugateGradient, BiCGStab };
 
 class IterativeSolver : public LinearSolver {
 public:
-    /// @param tolerance relative residual ‖b − Ax‖/‖b‖ to reach @param max_iterations iteration limit
+    /// @param[in] kind the Krylov method and its preconditioner
+    /// @param[in] tolerance relative residual ‖b − Ax‖/‖b‖ to reach
+    /// @param[in] max_iterations iteration limit
     IterativeSolver(IterativeSolverKind kind, double tolerance, int max_iterations);
 
     /// @throws ConvergenceError with the reached residual when the tolerance is not met.

@@ -41,8 +41,9 @@ inline constexpr std::size_t kAutoCondensationMaximumInterface = 8000;
 /// apply, the inner solver solves the full system; Statistics().condensation says which and why.
 class StaticCondensationSolver : public LinearSolver {
 public:
-    /// @param inner solver of the full system when not condensing (not null, shared with the caller)
-    /// @param bulk_not_linear why the bodies' stiffness may change ("" = it does not); "auto" then refuses
+    /// @param[in] inner solver of the full system when not condensing (not null, shared with the caller)
+    /// @param[in] mode when to condense (linear_solver_settings.static_condensation)
+    /// @param[in] bulk_not_linear why the bodies' stiffness may change ("" = it does not); "auto" then refuses
     StaticCondensationSolver(LinearSolver::Pointer inner, StaticCondensationMode mode, std::string bulk_not_linear = "");
     ~StaticCondensationSolver() override;
 

@@ -15,7 +15,11 @@ namespace contact_app {
 /// decides whether to go on (Kratos does) or to cut the step.
 class NewtonRaphsonStrategy : public SolvingStrategy {
 public:
-    /// @param criteria shared with the caller (not null) @param max_iterations ≥ 1
+    /// @param[in,out] rModelPart the model part solved; it outlives the strategy
+    /// @param[in] scheme,builder shared with the caller (not null)
+    /// @param[in] criteria shared with the caller (not null)
+    /// @param[in] max_iterations linear solves per step at most (≥ 1)
+    /// @param[in] settings the solver_settings the strategy reads (reactions, DoF rebuild, mesh motion, echo)
     NewtonRaphsonStrategy(ModelPart& rModelPart, Scheme::Pointer scheme, BuilderAndSolver::Pointer builder,
                           ConvergenceCriteria::Pointer criteria, int max_iterations = 10,
                           StrategySettings settings = {});

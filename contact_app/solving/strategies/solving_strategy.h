@@ -27,7 +27,9 @@ class SolvingStrategy {
 public:
     using Pointer = std::shared_ptr<SolvingStrategy>;
 
-    /// @param scheme, builder shared with the caller (not null); the model part outlives the strategy.
+    /// @param[in,out] rModelPart the model part solved; it outlives the strategy
+    /// @param[in] scheme,builder shared with the caller (not null)
+    /// @param[in] settings the solver_settings the strategy reads (reactions, DoF rebuild, mesh motion, echo)
     SolvingStrategy(ModelPart& rModelPart, Scheme::Pointer scheme, BuilderAndSolver::Pointer builder,
                     StrategySettings settings = {});
     virtual ~SolvingStrategy() = default;

@@ -17,23 +17,33 @@ public:
 
     /// @param[out] rLeftHandSideMatrix (n·d)×(n·d) load stiffness, resized here
     /// @param[out] rRightHandSideVector n·d external force, resized here
+    /// @param[in] rCurrentProcessInfo the solution-step data (the loads read only nodal and condition values)
     void CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
                               const ProcessInfo& rCurrentProcessInfo) override;
     /// @param[out] rLeftHandSideMatrix (n·d)×(n·d), resized here
+    /// @param[in] rCurrentProcessInfo the solution-step data (the loads read only nodal and condition values)
     void CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) override;
     /// @param[out] rRightHandSideVector n·d, resized here
+    /// @param[in] rCurrentProcessInfo the solution-step data (the loads read only nodal and condition values)
     void CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo& rCurrentProcessInfo) override;
     /// @param[out] rResult equation ids of DISPLACEMENT_X/Y(/Z), node by node
+    /// @param[in] rCurrentProcessInfo not read (the Kratos signature)
     /// @throws InputError if a node lacks one of the DoFs
     void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
     /// @param[out] rElementalDofList the DoFs in local-system order (owned by the nodes)
+    /// @param[in] rCurrentProcessInfo not read (the Kratos signature)
     /// @throws InputError if a node lacks one of the DoFs
     void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
     /// @param[out] rValues historical DISPLACEMENT at buffer step @p Step, local-system order
+    /// @param[in] Step buffer step: 0 the current solution step, 1 the previous one
     void GetValuesVector(Vector& rValues, int Step = 0) const override;
-    /// @param[out] rValues historical VELOCITY at buffer step @p Step. @throws InputError if not historical
+    /// @param[out] rValues historical VELOCITY at buffer step @p Step
+    /// @param[in] Step buffer step: 0 the current solution step, 1 the previous one
+    /// @throws InputError if not historical
     void GetFirstDerivativesVector(Vector& rValues, int Step = 0) const override;
-    /// @param[out] rValues historical ACCELERATION at buffer step @p Step. @throws InputError if not historical
+    /// @param[out] rValues historical ACCELERATION at buffer step @p Step
+    /// @param[in] Step buffer step: 0 the current solution step, 1 the previous one
+    /// @throws InputError if not historical
     void GetSecondDerivativesVector(Vector& rValues, int Step = 0) const override;
     /// @throws InputError naming the condition and node when DISPLACEMENT is not historical or a
     ///         DISPLACEMENT_* DoF is missing (plus the Entity checks: id, positive domain size)

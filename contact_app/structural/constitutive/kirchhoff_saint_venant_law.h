@@ -25,6 +25,7 @@ public:
     int GetStrainSize() const override;
     /// @brief Stress and tangent in @p measure (PK2, Kirchhoff or Cauchy), as flagged in @p rValues.
     /// @param[in,out] rValues strain_vector is read (element-provided, PK2 only) or written
+    /// @param[in] measure the stress measure of the returned stress and tangent
     /// @throws InputError for missing E/ν, a wrong strain size or an unusable F; InvertedElementError for
     ///         det F ≤ 0 (Cauchy);
     ///         ConfigurationError for PK1

@@ -24,6 +24,7 @@ public:
     int GetStrainSize() const override;
     /// @brief σ = D ε into stress_vector, D into constitutive_matrix (as flagged), for any @p measure.
     /// @param[in,out] rValues strain_vector is read (element-provided) or written (E from F)
+    /// @param[in] measure the stress measure asked for; it does not change the result here
     /// @throws InputError for missing E/ν, a wrong strain size or an unusable F
     void CalculateMaterialResponse(Parameters& rValues, StressMeasure measure) override;
     /// @brief STRAIN_ENERGY = ½ εᵀ D ε (energy per unit reference volume); other variables: 0.

@@ -40,6 +40,7 @@ public:
     static constexpr int kDofs = TDim * TNumNodes;
     static constexpr bool kAxisymmetric = TStrainSize == 4;
 
+    /// @param[in] id element Id
     /// @param[in] geometry TNumNodes nodes, working and local dimension TDim (shared with the model part)
     /// @param[in] properties shared; may be null until the materials are assigned
     /// @throws InputError if the geometry does not fit the element
@@ -59,50 +60,66 @@ public:
 
     /// @param[out] rLeftHandSideMatrix kDofs × kDofs tangent −∂RHS/∂u, resized here
     /// @param[out] rRightHandSideVector kDofs, f_ext − f_int, resized here
+    /// @param[in] rCurrentProcessInfo handed to the constitutive law; its TIME goes into error messages
     /// @throws InputError if the element was not initialized
     void CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
                               const ProcessInfo& rCurrentProcessInfo) override;
     /// @param[out] rLeftHandSideMatrix kDofs × kDofs tangent, resized here
+    /// @param[in] rCurrentProcessInfo handed to the constitutive law; its TIME goes into error messages
     void CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) override;
     /// @param[out] rRightHandSideVector kDofs residual f_ext − f_int, resized here
+    /// @param[in] rCurrentProcessInfo handed to the constitutive law; its TIME goes into error messages
     void CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo& rCurrentProcessInfo) override;
     /// @brief Consistent mass (one-order-higher rule, initial configuration) or, if Properties
     ///        COMPUTE_LUMPED_MASS_MATRIX is true, row-sum lumped mass; ρ = DENSITY × MASS_FACTOR (element value
     ///        first, then Properties; 1 if absent).
     /// @param[out] rMassMatrix kDofs × kDofs, resized here
+    /// @param[in] rCurrentProcessInfo not read (the Kratos signature)
     /// @throws InputError if the properties have no DENSITY
     void CalculateMassMatrix(Matrix& rMassMatrix, const ProcessInfo& rCurrentProcessInfo) override;
     /// @brief Rayleigh damping C = α M + β K_t, α/β from Properties RAYLEIGH_ALPHA/BETA, else the ProcessInfo,
     ///        else 0 (a zero coefficient skips its term).
     /// @param[out] rDampingMatrix kDofs × kDofs, resized here
+    /// @param[in] rCurrentProcessInfo RAYLEIGH_ALPHA/BETA when the properties have none; handed on to the tangent
     void CalculateDampingMatrix(Matrix& rDampingMatrix, const ProcessInfo& rCurrentProcessInfo) override;
     /// @param[out] rResult equation ids of DISPLACEMENT_X, _Y(, _Z) node by node
+    /// @param[in] rCurrentProcessInfo not read (the Kratos signature)
     /// @throws InputError naming the node if a DoF is missing
     void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
     /// @param[out] rElementalDofList DISPLACEMENT_X, _Y(, _Z) DoFs node by node (owned by the nodes)
+    /// @param[in] rCurrentProcessInfo not read (the Kratos signature)
     void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
     /// @param[out] rValues DISPLACEMENT at buffer step @p Step, kDofs, in DoF order
+    /// @param[in] Step buffer step: 0 the current solution step, 1 the previous one
     void GetValuesVector(Vector& rValues, int Step = 0) const override;
     /// @param[out] rValues VELOCITY at buffer step @p Step, kDofs, in DoF order
+    /// @param[in] Step buffer step: 0 the current solution step, 1 the previous one
     void GetFirstDerivativesVector(Vector& rValues, int Step = 0) const override;
     /// @param[out] rValues ACCELERATION at buffer step @p Step, kDofs, in DoF order
+    /// @param[in] Step buffer step: 0 the current solution step, 1 the previous one
     void GetSecondDerivativesVector(Vector& rValues, int Step = 0) const override;
 
     /// @brief VON_MISES_STRESS (of the Cauchy stress; plane elements take σ_zz = 0) or STRAIN_ENERGY (density
     ///        per unit reference volume, from the law).
+    /// @param[in] rVariable the result asked for, one of those above
     /// @param[out] rOutput one value per integration point
+    /// @param[in] rCurrentProcessInfo handed to the constitutive law; its TIME goes into error messages
     /// @throws InputError for other variables
     void CalculateOnIntegrationPoints(const Variable<double>& rVariable, std::vector<double>& rOutput,
                                       const ProcessInfo& rCurrentProcessInfo) override;
     /// @brief CAUCHY_STRESS_VECTOR, PK2_STRESS_VECTOR or GREEN_LAGRANGE_STRAIN_VECTOR (small strain for the
     ///        small-displacement elements), Voigt of size TStrainSize.
+    /// @param[in] rVariable the result asked for, one of those above
     /// @param[out] rOutput one vector per integration point
+    /// @param[in] rCurrentProcessInfo handed to the constitutive law; its TIME goes into error messages
     /// @throws InputError for other variables
     void CalculateOnIntegrationPoints(const Variable<Vector>& rVariable, std::vector<Vector>& rOutput,
                                       const ProcessInfo& rCurrentProcessInfo) override;
     /// @brief CAUCHY_STRESS_TENSOR, PK2_STRESS_TENSOR (2×2 plane, 3×3 axisymmetric and 3D) or
     ///        DEFORMATION_GRADIENT (the F handed to the law; I + ε for small displacements).
+    /// @param[in] rVariable the result asked for, one of those above
     /// @param[out] rOutput one matrix per integration point
+    /// @param[in] rCurrentProcessInfo handed to the constitutive law; its TIME goes into error messages
     /// @throws InputError for other variables
     void CalculateOnIntegrationPoints(const Variable<Matrix>& rVariable, std::vector<Matrix>& rOutput,
                                       const ProcessInfo& rCurrentProcessInfo) override;
@@ -133,6 +150,7 @@ protected:
     /// True for the finite-strain formulations (adds the geometric stiffness K_g).
     virtual bool UsesGeometricStiffness() const = 0;
     /// @brief Kinematics at integration point @p point from the current nodal state.
+    /// @param[in] point index of the integration point, 0 ≤ point < NumberOfIntegrationPoints()
     /// @param[out] rKinematics every field, including weight and body_weight
     virtual void ComputeKinematics(std::size_t point, Kinematics& rKinematics) const = 0;
 
