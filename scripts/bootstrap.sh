@@ -5,8 +5,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 # libpetsc-real-dev (+ pkg-config to find it, openmpi-bin for mpirun): the iterative solver (docs/architecture.md).
+# doxygen: the header doc check of scripts/run_tests.sh (docs/Doxyfile).
 apt_packages=(build-essential libeigen3-dev libsuitesparse-dev libmumps-seq-dev libopenblas0-pthread libgtest-dev ccache
-  ninja-build pkg-config libpetsc-real-dev openmpi-bin)
+  ninja-build pkg-config libpetsc-real-dev openmpi-bin doxygen)
 missing=()
 for package in "${apt_packages[@]}"; do
   dpkg -s "$package" >/dev/null 2>&1 || missing+=("$package")
