@@ -21,7 +21,11 @@ default, ``--steps N``: the full load in N equal steps instead of the example's 
 (linear_solver_settings.ordering; default: the example's own setting, "auto"), ``--solver
 umfpack,mumps``: and once per linear solver_type (default: the example's own). For hertz_3d a
 fractional level is an intermediate mesh (``make_mesh.subdivision_factor``): ``--example
-hertz_3d 3.8`` has 2.8e5 displacement DoFs.
+hertz_3d 3.8`` has 2.8e5 displacement DoFs. ``--threads 1,2``: and once per OpenMP thread count of
+the assembly (OMP_NUM_THREADS; OpenBLAS held at OPENBLAS_NUM_THREADS, 1 unless set, so that only
+the assembly changes), with a table of the builder's figures: the assembly and its share of the
+total, the scatter (adding local systems into A and b), the RHS-only assemblies (count and
+seconds), the LHS + RHS builds, and the 1-minute load average before and after the run.
 """
 
 from __future__ import annotations
@@ -59,6 +63,15 @@ def _measure(
 
     search_seconds = [0.0]
     original = SearchBaseProcess.ExecuteInitializeSolutionStep
+    builder_totals: dict[str, float] = {}
+    add_timings = ca.analysis.Reporter.add_builder_timings
+
+    def summed_timings(self, timings):  # every step's builder figures, summed over the run
+        for key, value in timings.items():
+            builder_totals[key] = builder_totals.get(key, 0.0) + float(value)
+        add_timings(self, timings)
+
+    ca.analysis.Reporter.add_builder_timings = summed_timings
 
     def timed_search(self):  # the search phase of every step
         start = time.perf_counter()
@@ -81,6 +94,7 @@ def _measure(
     (workdir / "ProjectParameters.json").write_text(json.dumps(parameters, indent=1))
     make_mesh.write_mesh(workdir / f"{example}.msh", level)
     os.chdir(workdir)
+    load_before = os.getloadavg()[0]
     start = time.perf_counter()
     analysis = ca.analysis.run(workdir / "ProjectParameters.json", quiet=True)
     total = time.perf_counter() - start
@@ -129,6 +143,12 @@ def _measure(
         "p0_error": hertz.p0_error,
     }
     figures["search_and_contact_share"] = (figures["search_s"] + contact_assembly) / total
+    figures["threads"] = os.environ.get("OMP_NUM_THREADS", "")
+    figures["lhs_rhs_builds"] = int(builder_totals.get("builds", 0))
+    figures["rhs_only_builds"] = int(builder_totals.get("residual_builds", 0))
+    figures["rhs_only_s"] = builder_totals.get("residual", 0.0)
+    figures["scatter_s"] = builder_totals.get("scatter", 0.0)
+    figures["load"] = [load_before, os.getloadavg()[0]]
     return figures
 
 
@@ -142,7 +162,7 @@ def main(argv: list[str]) -> int:
         print(json.dumps(figures))
         return 0
     options: dict[str, str] = {}
-    while argv and argv[0] in ("--example", "--steps", "--ordering", "--solver"):
+    while argv and argv[0] in ("--example", "--steps", "--ordering", "--solver", "--threads"):
         if len(argv) < 2:
             print(f"{argv[0]} expects a value", file=sys.stderr)
             return 2
@@ -154,29 +174,34 @@ def main(argv: list[str]) -> int:
     steps = int(options["steps"]) if "steps" in options else None
     orderings = options["ordering"].split(",") if "ordering" in options else [None]
     solvers = options["solver"].split(",") if "solver" in options else [None]
+    thread_counts = options["threads"].split(",") if "threads" in options else [None]
     levels = [float(a) if "." in a else int(a) for a in argv] or [1, 2, 3]
     OUT.mkdir(parents=True, exist_ok=True)
     rows = []
-    for level in levels:
-        for solver in solvers:
-            for ordering in orderings:
-                job = {
-                    "example": example,
-                    "level": level,
-                    "steps": steps,
-                    "ordering": ordering,
-                    "solver": solver,
-                }
-                done = subprocess.run(
-                    [sys.executable, __file__, "--worker", json.dumps(job)],
-                    capture_output=True,
-                    text=True,
-                    check=False,
-                )
-                if done.returncode != 0:
-                    print(f"{job} failed:\n{done.stderr[-2000:]}", file=sys.stderr)
-                    return 1
-                rows.append(json.loads(done.stdout.strip().splitlines()[-1]))
+    jobs = [
+        {"example": example, "level": level, "steps": steps}
+        | {"ordering": o, "solver": s, "threads": t}
+        for level in levels
+        for s in solvers
+        for o in orderings
+        for t in thread_counts
+    ]
+    for job in jobs:
+        environment = dict(os.environ)
+        if job["threads"] is not None:
+            environment["OMP_NUM_THREADS"] = job["threads"]
+            environment.setdefault("OPENBLAS_NUM_THREADS", "1")
+        done = subprocess.run(
+            [sys.executable, __file__, "--worker", json.dumps(job)],
+            capture_output=True,
+            text=True,
+            check=False,
+            env=environment,
+        )
+        if done.returncode != 0:
+            print(f"{job} failed:\n{done.stderr[-2000:]}", file=sys.stderr)
+            return 1
+        rows.append(json.loads(done.stdout.strip().splitlines()[-1]))
     header = (
         f"{example}\n{'level':>5} {'DoFs':>7} {'pairs':>5} {'newton/step':>14} {'total s':>8} "
         f"{'search':>7} {'assembly':>8} {'(contact)':>9} {'solve':>7} {'output':>7} "
@@ -219,6 +244,20 @@ def main(argv: list[str]) -> int:
             print(
                 f"{r['level']:>5} {r['dofs_displacement']:>7} {len(its):>6} {sum(its):>10} "
                 f"{max(its):>5} {sum(its) / len(its):6.1f}  {r['krylov_method']}"
+            )
+    if thread_counts != [None]:
+        print(
+            f"\n{'level':>5} {'DoFs':>7} {'threads':>7} {'total s':>8} {'assembly':>8} "
+            f"{'share':>6} {'scatter':>7} {'RHS-only':>8} {'(s)':>6} {'LHS+RHS':>7} {'solve s':>8} "
+            f"{'load':>10}"
+        )
+        for r in rows:
+            print(
+                f"{r['level']:>5} {r['dofs_displacement']:>7} {r['threads']:>7} "
+                f"{r['total_s']:8.2f} {r['assembly_s']:8.2f} "
+                f"{100 * r['assembly_s'] / r['total_s']:5.1f}% {r['scatter_s']:7.2f} "
+                f"{r['rhs_only_builds']:>8} {r['rhs_only_s']:6.2f} {r['lhs_rhs_builds']:>7} "
+                f"{r['linear_solve_s']:8.2f} {r['load'][0]:4.1f}/{r['load'][1]:<4.1f}"
             )
     path = OUT / f"{example}_baseline.json"
     path.write_text(json.dumps(rows, indent=1) + "\n")

@@ -11,10 +11,16 @@ as a module attribute.
 from __future__ import annotations
 
 import importlib
+import os
 from typing import TYPE_CHECKING, Any
 
-from . import _core
-from ._core import (
+# The assembly's OpenMP threads sleep while they wait instead of spinning (docs/architecture.md,
+# "Threading model"): where the cores are shared, a spinning thread holds the core its busy partner
+# needs. libgomp reads the setting when _core loads it, so it is set first, never over the user's.
+os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
+
+from . import _core  # noqa: E402
+from ._core import (  # noqa: E402
     AALMAdaptPenaltyValueProcess,
     ActiveSetUtilities,
     ALMFastInit,
