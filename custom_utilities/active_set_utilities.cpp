@@ -191,6 +191,20 @@ void RaiseSlipTrialFactor(Node& node, const Array3& direction, double bound, dou
     if (turn > covered) node.SetValue(SLIP_TRIAL_FACTOR, kSlipTurnMargin * kSlipTurnMargin * turn * turn * bound / (2.0 * stiffness));
 }
 
+/// A node leaving stick for slip: its multiplier's tangential part goes onto the Coulomb cone along the trial
+/// direction, Pλ := (μ|λ̄n|/k) τ̂ (the return map of the trial; @p magnitude = μ|λ̄n|/k, @p direction = τ̂), the normal
+/// part is kept. The stick iterate's Pλ may lie far outside the cone (3.6× on the frictional sliding cylinders);
+/// left there, the slip law's linearisation, which resists a rotation only through c_t|Ŝ|, turns the excess into
+/// large rotations over the next iterations (docs/theory/active_set.md §3). A node with a held multiplier component
+/// (symmetry plane: a fixed DoF) keeps its values.
+void ReturnToTheCone(const Node& node, Array3& lambda, double magnitude, const Array3& direction) {
+    for (int c = 0; c < 3; ++c)
+        if (ContactUtilities::IsMultiplierComponentHeld(node, c)) return;
+    if (direction.norm() == 0.0 || !(magnitude > 0.0)) return;
+    const Array3 normal = node.FastGetSolutionStepValue(NORMAL);
+    lambda = normal.dot(lambda) * normal + magnitude * direction;
+}
+
 /// max over the slave nodes to update of μ |λ̄n|, with λ̄n as @p transmitted_normal computes it.
 template <class TNormal>
 double LargestFrictionBound(const std::vector<Node*>& nodes, TNormal&& transmitted_normal) {
@@ -340,6 +354,7 @@ std::array<std::size_t, 2> ComputeALMFrictionalActiveSet(ModelPart& model_part, 
                        slip ? Array3(-mu * transmitted_normal * direction) : trial);
         const std::size_t changed = UpdateSlip(*node, slip);
         if (!pure_slip) flips[1] += changed;
+        if (slip && !was_slip && mu >= kMachineEpsilon) ReturnToTheCone(*node, lambda, -mu * transmitted_normal / k, direction);
         if (slip && was_slip && mu >= kMachineEpsilon) {
             if (Turned(*node, direction, -mu * transmitted_normal, largest_bound)) ++flips[1];
             if (directions_turn) RaiseSlipTrialFactor(*node, direction, -mu * transmitted_normal, penalty);

@@ -290,6 +290,9 @@ TEST(ActiveSetUtilities, test_alm_frictional_hysteresis_augmentation_and_activat
     EXPECT_LT((tangent(stick_full) - Array3(0.7, 0, 0)).norm(), 1e-14);
     EXPECT_LT((tangent(slip_augmented) - Array3(0.375 * 2.0, 0, 0)).norm(), 1e-14);  // −μ λ̄n along λ̄τ
     EXPECT_LT((tangent(stick_to_slip) - Array3(0.25 * 2.0, 0, 0)).norm(), 1e-14);  // −μ λ̄n along λ̄τ
+    // Leaving stick: back onto the cone, kPλ = (0.5, 0, 0); a node that was slipping keeps its λ.
+    EXPECT_LT((stick_to_slip.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) - Array3(0.25, -1, 0)).norm(), 1e-15);
+    EXPECT_EQ(slip_stays.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER), Array3(0.3, -1, 0));
     EXPECT_LT((tangent(slip_stays) - Array3(0.32 * 2.0, 0, 0)).norm(), 1e-14);
     // Activation: λ := n λ̄n/k + λ̄τ/k.
     EXPECT_TRUE(entering.Is(ACTIVE));
@@ -302,6 +305,28 @@ TEST(ActiveSetUtilities, test_alm_frictional_hysteresis_augmentation_and_activat
     const auto pure = ActiveSetUtilities::ComputeALMFrictionalActiveSet(*m.root, true);
     EXPECT_EQ(pure[1], 0u);
     for (Node* node : {&stick_stays, &slip_to_stick, &stick_full, &entering}) EXPECT_TRUE(node->Is(SLIP));
+}
+
+TEST(ActiveSetUtilities, test_alm_frictional_node_leaving_stick_returns_to_the_cone) {
+    // λ = (0.9, −1, 0.3), g̃ = 0, k = 2: λ̄n = −2, kPλ = (1.8, 0, 0.6), S = 0 → trial = kPλ, |trial| = 1.90 > μ|λ̄n| = 0.5.
+    ActiveSetModel m;
+    auto node_with = [&](bool slip) -> Node& {
+        Node& node = m.Add(0.0, true, slip);
+        node.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) = Array3(0.9, -1.0, 0.3);
+        node.SetValue(FRICTION_COEFFICIENT, 0.25);
+        return node;
+    };
+    Node& leaving_stick = node_with(false);
+    Node& slipping = node_with(true);
+    ActiveSetUtilities::ComputeALMFrictionalActiveSet(*m.root);
+    EXPECT_TRUE(leaving_stick.Is(SLIP) && slipping.Is(SLIP));
+    // Pλ := (μ|λ̄n|/k) τ̂ with τ̂ the trial direction; the normal part is kept.
+    const Array3 direction = Array3(1.8, 0.0, 0.6).normalized();
+    const Array3 mapped = Array3(0.0, -1.0, 0.0) + (0.25 * 2.0 / kScale) * direction;
+    EXPECT_LT((leaving_stick.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) - mapped).norm(), 1e-15);
+    EXPECT_LT((leaving_stick.GetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE) - 0.5 * direction).norm(), 1e-15);
+    // A node that was slipping keeps its Newton iterate.
+    EXPECT_EQ(slipping.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER), Array3(0.9, -1.0, 0.3));
 }
 
 TEST(ActiveSetUtilities, test_alm_frictional_frictionless_node_activation_drops_the_tangent) {
