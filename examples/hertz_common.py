@@ -1,8 +1,9 @@
 """What the Hertz and Cattaneo-Mindlin examples share: meshing, width estimates, E*, settings.
 
 Mesh grading and gmsh groups, the contact width estimates, E*, loading a folder's script by path
-and the contact process settings; for the Hertz runners also the run, the pressure plot and the
-command line.
+and the contact process settings; for the Hertz runners also the run, the result's common fields
+(``HertzRun``: each runner adds its width b or a), the Newton record, the summary's frame, the
+pressure plot and the command line.
 
 Both examples measure an elliptic pressure profile p(c) = p0 sqrt(1 - c^2/w^2) (c = x in 2D, the
 radius r in 3D; w = b or a) two ways: a least-squares fit of p^2 against c^2, and the second
@@ -22,6 +23,7 @@ import os
 import sys
 import time
 from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -164,6 +166,16 @@ def load_script(name: str, path: Path):
     return sys.modules[name]
 
 
+def mesh_script(folder: Path):
+    """The make_mesh.py of the example ``folder``, loaded as ``<folder name>_make_mesh``.
+
+    Under a name of its own (``load_script``): a plain ``import make_mesh`` returns whichever
+    example's mesh script the process imported first (pytest running the 2D then the 3D runner
+    wrote a 2D mesh for the 3D run).
+    """
+    return load_script(f"{folder.name}_make_mesh", folder / "make_mesh.py")
+
+
 def contact_parameters(parameters: dict) -> dict:
     """The Parameters block of the ALM contact process of a ProjectParameters tree."""
     for process in parameters["processes"]["contact_process_list"]:
@@ -209,6 +221,57 @@ def run_example(
     result.refinement = refinement  # None: an existing mesh of unknown level was reused
     result.wall_time = elapsed
     return result
+
+
+@dataclass(kw_only=True)
+class HertzRun:
+    """What a Hertz run measured in both dimensions; each runner adds its width w (b or a)."""
+
+    refinement: int | None
+    spacing: float  # slave surface interval at the contact point
+    nodes: int
+    elements: int
+    load: float  # on the whole body: P' per unit length (2D), F (3D)
+    effective_modulus: float
+    p0_analytic: float
+    p0: float
+    active_nodes: int
+    iterations: list[int]
+    converged: bool
+    wall_time: float
+    profile: list[tuple[float, float, bool]] = field(default_factory=list)  # (c, p, active)
+
+    @property
+    def p0_error(self) -> float:
+        """Relative error of the peak pressure."""
+        return abs(self.p0 - self.p0_analytic) / self.p0_analytic
+
+
+def newton_record(analysis: Any) -> dict[str, Any]:
+    """``iterations`` (Newton, per step) and ``converged`` (every step) of a finished analysis."""
+    steps = analysis.reporter.steps
+    return {
+        "iterations": [record.iterations for record in steps],
+        "converged": bool(steps) and not analysis.reporter.non_converged_steps(),
+    }
+
+
+def refinement_text(result: Any) -> str:
+    """The mesh line's ", refinement N" of a summary; empty for a reused mesh."""
+    return "" if result.refinement is None else f", refinement {result.refinement}"
+
+
+def hertz_summary(result: Any, lines: list[str]) -> str:
+    """The summary: ``lines``, then the Newton iterations and the wall time of ``result``."""
+    status = "all steps converged" if result.converged else "NOT CONVERGED"
+    return "\n".join(
+        [
+            *lines,
+            f"  Newton iterations: {sum(result.iterations)} "
+            f"(per step {', '.join(map(str, result.iterations))}), {status}",
+            f"  wall time: {result.wall_time:.2f} s",
+        ]
+    )
 
 
 def elliptic_profile(p0: float, width: float, c: np.ndarray) -> np.ndarray:

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import math
 import sys
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -33,20 +33,9 @@ import contact_app as ca
 
 HERE = Path(__file__).resolve().parent
 sys.path[:0] = [str(HERE), str(HERE.parent)]
-from hertz_common import (  # noqa: E402  (examples/hertz_common.py)
-    effective_modulus,
-    example_main,
-    fit_elliptic_profile,
-    load_script,
-    plot_elliptic_profile,
-    plot_pressure,
-    run_example,
-    second_moment_width,
-)
+import hertz_common as common  # noqa: E402  (examples/hertz_common.py)
 
-# Under a name of its own: a plain `import make_mesh` returns whichever example's mesh script the
-# process imported first (pytest running the 2D then the 3D runner wrote a 2D mesh for the 3D run).
-make_mesh = load_script("hertz_2d_make_mesh", HERE / "make_mesh.py")
+make_mesh = common.mesh_script(HERE)
 
 MESH = "hertz_2d.msh"
 PLOT = "hertz_2d_pressure.png"
@@ -54,26 +43,13 @@ SUMMARY = "hertz_2d_summary.txt"
 DEFAULT_REFINEMENT = 2
 
 
-@dataclass
-class HertzResult:
-    """What one run measured, next to the analytic values."""
+@dataclass(kw_only=True)
+class HertzResult(common.HertzRun):
+    """What one run measured, next to the analytic values; p0 is the fit's."""
 
-    refinement: int | None
-    spacing: float  # slave surface interval at the contact point
-    nodes: int
-    elements: int
-    load: float  # P' of the full cylinder, per unit length
-    effective_modulus: float
     b_analytic: float
-    p0_analytic: float
     b: float  # moment estimate
-    p0: float  # from the fit
     b_fit: float
-    active_nodes: int
-    iterations: list[int]
-    converged: bool
-    wall_time: float
-    profile: list[tuple[float, float, bool]] = field(default_factory=list)  # (x, p, active)
 
     @property
     def b_error(self) -> float:
@@ -85,20 +61,15 @@ class HertzResult:
         """Relative error of the fitted half-width."""
         return abs(self.b_fit - self.b_analytic) / self.b_analytic
 
-    @property
-    def p0_error(self) -> float:
-        """Relative error of the peak pressure."""
-        return abs(self.p0 - self.p0_analytic) / self.p0_analytic
-
 
 def fit_semi_ellipse(x: np.ndarray, p: np.ndarray) -> tuple[float, float]:
     """(b, p0) of p^2 = p0^2 - (p0/b)^2 x^2 fitted in the least-squares sense."""
-    return fit_elliptic_profile(x, p, "semi-ellipse")
+    return common.fit_elliptic_profile(x, p, "semi-ellipse")
 
 
 def moment_half_width(x: np.ndarray, force: np.ndarray) -> float:
     """Half-width from sum(x^2 f) / sum(f) = b^2 / 4 (second moment of the semi-ellipse)."""
-    return second_moment_width(x, force, 4.0)
+    return common.second_moment_width(x, force, 4.0)
 
 
 def evaluate(analysis: ca.analysis.StructuralMechanicsAnalysis, materials: Path) -> HertzResult:
@@ -110,7 +81,7 @@ def evaluate(analysis: ca.analysis.StructuralMechanicsAnalysis, materials: Path)
         length = math.hypot(nodes[1].X0 - nodes[0].X0, nodes[1].Y0 - nodes[0].Y0)
         half_load += np.linalg.norm(np.asarray(condition.GetValue(ca.LINE_LOAD))) * length
     load = 2.0 * half_load  # the model is the half x >= 0
-    modulus = effective_modulus(materials)
+    modulus = common.effective_modulus(materials)
     b_analytic = math.sqrt(4.0 * load * make_mesh.RADIUS / (math.pi * modulus))
     p0_analytic = 2.0 * load / (math.pi * b_analytic)
 
@@ -138,7 +109,6 @@ def evaluate(analysis: ca.analysis.StructuralMechanicsAnalysis, materials: Path)
     else:
         b = b_fit = p0 = 0.0
     xs = [x for x, _, _ in profile]
-    steps = analysis.reporter.steps
     return HertzResult(
         refinement=None,
         spacing=xs[1] - xs[0],
@@ -152,34 +122,28 @@ def evaluate(analysis: ca.analysis.StructuralMechanicsAnalysis, materials: Path)
         p0=p0,
         b_fit=b_fit,
         active_nodes=len(active),
-        iterations=[record.iterations for record in steps],
-        converged=bool(steps) and not analysis.reporter.non_converged_steps(),
         wall_time=0.0,
         profile=profile,
+        **common.newton_record(analysis),
     )
 
 
 def run(workdir: Path, refinement: int | None = None, quiet: bool = True) -> HertzResult:
-    """Run the example in ``workdir``.
-
-    The mesh is written there at level ``refinement``, or at DEFAULT_REFINEMENT when
-    ``refinement`` is None and no mesh exists; otherwise the existing mesh is used.
-    """
+    """Run the example in ``workdir``, meshed as ``hertz_common.run_example`` says."""
 
     def analyse(parameters: Path) -> ca.analysis.StructuralMechanicsAnalysis:
         # The runner reports every step, NOT CONVERGED ones too (exit 1), so it goes on from them
         # (the default stops at the first one: docs/running.md "Non-convergence").
         return ca.analysis.run(parameters, quiet=quiet, stop_on_non_convergence=False)
 
-    return run_example(
+    return common.run_example(
         workdir, refinement, MESH, DEFAULT_REFINEMENT, make_mesh.write_mesh, HERE, analyse, evaluate
     )
 
 
 def summary(result: HertzResult) -> str:
     """The text summary of a run."""
-    status = "all steps converged" if result.converged else "NOT CONVERGED"
-    level = "" if result.refinement is None else f", refinement {result.refinement}"
+    level = common.refinement_text(result)
     lines = [
         "hertz_2d: elastic cylinder on an elastic foundation, plane strain, ALM frictionless",
         f"  R = {make_mesh.RADIUS:g} mm, P' = {result.load:.6g} N/mm, "
@@ -192,11 +156,8 @@ def summary(result: HertzResult) -> str:
         f"error {100 * result.p0_error:.2f} %",
         f"  fitted half-width b: {result.b_fit:.6g}, error {100 * result.b_fit_error:.2f} %",
         f"  active slave nodes: {result.active_nodes}",
-        f"  Newton iterations: {sum(result.iterations)} "
-        f"(per step {', '.join(map(str, result.iterations))}), {status}",
-        f"  wall time: {result.wall_time:.2f} s",
     ]
-    return "\n".join(lines)
+    return common.hertz_summary(result, lines)
 
 
 def plot(result: HertzResult, path: Path) -> None:
@@ -205,10 +166,10 @@ def plot(result: HertzResult, path: Path) -> None:
     def estimates(axis) -> None:
         if result.b_fit > 0.0:
             fit = f"fit: b = {result.b_fit:.4g}, p0 = {result.p0:.4g}"
-            plot_elliptic_profile(axis, result.p0, result.b_fit, "C0--", fit)
+            common.plot_elliptic_profile(axis, result.p0, result.b_fit, "C0--", fit)
             axis.axvline(result.b, color="C3", linestyle=":", label=f"moment: b = {result.b:.4g}")
 
-    plot_pressure(
+    common.plot_pressure(
         path,
         result,
         result.b_analytic,
@@ -220,7 +181,7 @@ def plot(result: HertzResult, path: Path) -> None:
 
 def main(argv: list[str] | None = None) -> int:
     """Run, write the plot and the summary, print the summary; 1 if a step did not converge."""
-    return example_main(argv, __doc__.splitlines()[0], run, summary, plot, SUMMARY, PLOT)
+    return common.example_main(argv, __doc__.splitlines()[0], run, summary, plot, SUMMARY, PLOT)
 
 
 if __name__ == "__main__":

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import math
 import sys
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -34,20 +34,9 @@ from contact_app.parameters import Parameters
 
 HERE = Path(__file__).resolve().parent
 sys.path[:0] = [str(HERE), str(HERE.parent)]
-from hertz_common import (  # noqa: E402  (examples/hertz_common.py)
-    effective_modulus,
-    example_main,
-    fit_elliptic_profile,
-    load_script,
-    plot_elliptic_profile,
-    plot_pressure,
-    run_example,
-    second_moment_width,
-)
+import hertz_common as common  # noqa: E402  (examples/hertz_common.py)
 
-# Under a name of its own: a plain `import make_mesh` returns whichever example's mesh script the
-# process imported first (pytest running the 2D then the 3D runner wrote a 2D mesh for the 3D run).
-make_mesh = load_script("hertz_3d_make_mesh", HERE / "make_mesh.py")
+make_mesh = common.mesh_script(HERE)
 
 MESH = "hertz_3d.msh"
 PLOT = "hertz_3d_pressure.png"
@@ -56,39 +45,21 @@ DEFAULT_REFINEMENT = 2
 GAUSS_2 = (-1.0 / math.sqrt(3.0), 1.0 / math.sqrt(3.0))
 
 
-@dataclass
-class HertzResult:
-    """What one run measured, next to the analytic values."""
+@dataclass(kw_only=True)
+class HertzResult(common.HertzRun):
+    """What one run measured, next to the analytic values; p0 = 3F / (2 pi a^2), moment a."""
 
-    refinement: int | None
-    spacing: float  # slave surface interval at the pole
-    nodes: int
-    elements: int
     dofs: int  # equations of the last step: displacements and the paired slave multipliers
-    load: float  # F on the full sphere
-    effective_modulus: float
     a_analytic: float
-    p0_analytic: float
     a: float  # moment estimate
-    p0: float  # 3F / (2 pi a^2) with the moment estimate of a
     a_fit: float
     p0_fit: float
     contact_force: float  # 4 sum(f) over the active slave nodes
-    active_nodes: int
-    iterations: list[int]
-    converged: bool
-    wall_time: float
-    profile: list[tuple[float, float, bool]] = field(default_factory=list)  # (r, p, active)
 
     @property
     def a_error(self) -> float:
         """Relative error of the contact radius (moment estimate)."""
         return abs(self.a - self.a_analytic) / self.a_analytic
-
-    @property
-    def p0_error(self) -> float:
-        """Relative error of the peak pressure 3F / (2 pi a^2)."""
-        return abs(self.p0 - self.p0_analytic) / self.p0_analytic
 
     @property
     def a_fit_error(self) -> float:
@@ -103,12 +74,12 @@ class HertzResult:
 
 def fit_half_ellipsoid(r: np.ndarray, p: np.ndarray) -> tuple[float, float]:
     """(a, p0) of p^2 = p0^2 - (p0/a)^2 r^2 fitted in the least-squares sense."""
-    return fit_elliptic_profile(r, p, "half-ellipsoid")
+    return common.fit_elliptic_profile(r, p, "half-ellipsoid")
 
 
 def moment_radius(r: np.ndarray, force: np.ndarray) -> float:
     """Contact radius from sum(r^2 f) / sum(f) = (2/5) a^2, the Hertz pressure's second moment."""
-    return second_moment_width(r, force, 2.5)
+    return common.second_moment_width(r, force, 2.5)
 
 
 def quad_nodal_areas(corners: np.ndarray) -> np.ndarray:
@@ -151,7 +122,7 @@ def evaluate(analysis: RecordingAnalysis, materials: Path) -> HertzResult:
         area = quad_nodal_areas(corners).sum()
         quarter_load += np.linalg.norm(np.asarray(condition.GetValue(ca.SURFACE_LOAD))) * area
     load = 4.0 * quarter_load  # the model is the quarter x, y >= 0
-    modulus = effective_modulus(materials)
+    modulus = common.effective_modulus(materials)
     a_analytic = (3.0 * load * make_mesh.RADIUS / (4.0 * modulus)) ** (1.0 / 3.0)
     p0_analytic = 3.0 * load / (2.0 * math.pi * a_analytic**2)
 
@@ -179,7 +150,6 @@ def evaluate(analysis: RecordingAnalysis, materials: Path) -> HertzResult:
         contact_force = 4.0 * float(force.sum())
     else:
         a = a_fit = p0_fit = contact_force = 0.0
-    steps = analysis.reporter.steps
     return HertzResult(
         refinement=None,
         spacing=sorted({round(r, 12) for r, *_ in rows})[1],
@@ -196,19 +166,14 @@ def evaluate(analysis: RecordingAnalysis, materials: Path) -> HertzResult:
         p0_fit=p0_fit,
         contact_force=contact_force,
         active_nodes=len(active),
-        iterations=[record.iterations for record in steps],
-        converged=bool(steps) and not analysis.reporter.non_converged_steps(),
         wall_time=0.0,
         profile=[(r, p, is_active) for r, p, is_active, _ in rows],
+        **common.newton_record(analysis),
     )
 
 
 def run(workdir: Path, refinement: int | None = None, quiet: bool = True) -> HertzResult:
-    """Run the example in ``workdir``.
-
-    The mesh is written there at level ``refinement``, or at DEFAULT_REFINEMENT when
-    ``refinement`` is None and no mesh exists; otherwise the existing mesh is used.
-    """
+    """Run the example in ``workdir``, meshed as ``hertz_common.run_example`` says."""
 
     def analyse(parameters: Path) -> RecordingAnalysis:
         analysis = RecordingAnalysis(
@@ -223,15 +188,14 @@ def run(workdir: Path, refinement: int | None = None, quiet: bool = True) -> Her
         analysis.Run()
         return analysis
 
-    return run_example(
+    return common.run_example(
         workdir, refinement, MESH, DEFAULT_REFINEMENT, make_mesh.write_mesh, HERE, analyse, evaluate
     )
 
 
 def summary(result: HertzResult) -> str:
     """The text summary of a run."""
-    status = "all steps converged" if result.converged else "NOT CONVERGED"
-    level = "" if result.refinement is None else f", refinement {result.refinement}"
+    level = common.refinement_text(result)
     lines = [
         "hertz_3d: elastic sphere on an elastic block, quarter model, ALM frictionless",
         f"  R = {make_mesh.RADIUS:g} mm, F = {result.load:.6g} N, "
@@ -250,11 +214,8 @@ def summary(result: HertzResult) -> str:
         f"  active slave nodes: {result.active_nodes}, their force 4 sum(p A) = "
         f"{result.contact_force:.6g} N "
         f"({100 * (result.contact_force / result.load - 1):+.2f} % of F)",
-        f"  Newton iterations: {sum(result.iterations)} "
-        f"(per step {', '.join(map(str, result.iterations))}), {status}",
-        f"  wall time: {result.wall_time:.2f} s",
     ]
-    return "\n".join(lines)
+    return common.hertz_summary(result, lines)
 
 
 def plot(result: HertzResult, path: Path) -> None:
@@ -263,11 +224,11 @@ def plot(result: HertzResult, path: Path) -> None:
     def estimates(axis) -> None:
         if result.a > 0.0:
             moment = f"moment: a = {result.a:.4g}, p0 = 3F/(2πa²) = {result.p0:.4g}"
-            plot_elliptic_profile(axis, result.p0, result.a, "C3:", moment)
+            common.plot_elliptic_profile(axis, result.p0, result.a, "C3:", moment)
             fit = f"fit: a = {result.a_fit:.4g}, p0 = {result.p0_fit:.4g}"
-            plot_elliptic_profile(axis, result.p0_fit, result.a_fit, "C0--", fit)
+            common.plot_elliptic_profile(axis, result.p0_fit, result.a_fit, "C0--", fit)
 
-    plot_pressure(
+    common.plot_pressure(
         path,
         result,
         result.a_analytic,
@@ -280,7 +241,7 @@ def plot(result: HertzResult, path: Path) -> None:
 
 def main(argv: list[str] | None = None) -> int:
     """Run, write the plot and the summary, print the summary; 1 if a step did not converge."""
-    return example_main(argv, __doc__.splitlines()[0], run, summary, plot, SUMMARY, PLOT)
+    return common.example_main(argv, __doc__.splitlines()[0], run, summary, plot, SUMMARY, PLOT)
 
 
 if __name__ == "__main__":

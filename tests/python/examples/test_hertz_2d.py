@@ -9,32 +9,20 @@ outputs; the slow study runs three nested refinements (h halved each time) in-pr
 
 from __future__ import annotations
 
-import importlib.util
 import json
 import math
 import shutil
-import subprocess
-import sys
 from pathlib import Path
 
+import hertz_examples_common as common
 import pytest
 
-EXAMPLE = Path(__file__).parents[3] / "examples" / "hertz_2d"
+EXAMPLE = common.EXAMPLES / "hertz_2d"
 STUDY_LEVELS = (1, 2, 3)
 
 
 def _example_module():
-    spec = importlib.util.spec_from_file_location("run_hertz_2d", EXAMPLE / "run_hertz_2d.py")
-    module = importlib.util.module_from_spec(spec)
-    assert spec.loader is not None
-    sys.modules[spec.name] = module  # dataclasses look their module up there
-    spec.loader.exec_module(module)
-    return module
-
-
-def _copy_inputs(directory: Path) -> None:
-    for name in ("ProjectParameters.json", "materials.json"):
-        shutil.copy(EXAMPLE / name, directory / name)
+    return common.load(EXAMPLE, "run_hertz_2d")
 
 
 def test_semi_ellipse_fit_recovers_half_width_and_peak() -> None:
@@ -58,22 +46,7 @@ def test_moment_estimate_recovers_half_width() -> None:
 
 
 def test_hertz_2d_coarsest_mesh_runs_converges_and_matches_hertz(tmp_path: Path) -> None:
-    _copy_inputs(tmp_path)
-    run = subprocess.run(
-        [sys.executable, str(EXAMPLE / "run_hertz_2d.py"), "--refinement", "1", "--quiet"],
-        cwd=tmp_path,
-        capture_output=True,
-        text=True,
-        timeout=300,
-    )
-    assert run.returncode == 0, run.stdout + run.stderr
-    for name in ("hertz_2d.msh", "hertz_2d_pressure.png", "hertz_2d_summary.txt"):
-        assert (tmp_path / name).stat().st_size > 0, name
-    assert (tmp_path / "hertz_2d_pressure.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-    assert len(list((tmp_path / "vtk_output").glob("Structure_0_*.vtu"))) == 4
-    summary = (tmp_path / "hertz_2d_summary.txt").read_text()
-    assert "all steps converged" in summary
-    assert summary in run.stdout
+    common.run_coarsest(EXAMPLE, tmp_path)
 
     # Same run, evaluated in-process from the files it left (mesh reused, not rewritten).
     result = _example_module().run(tmp_path, None)
@@ -88,33 +61,16 @@ def test_hertz_2d_coarsest_mesh_runs_converges_and_matches_hertz(tmp_path: Path)
     assert math.pi * result.p0 * result.b_fit / 4.0 == pytest.approx(result.load / 2.0, rel=0.03)
 
 
-def _study(module, directory: Path, levels: tuple[int, ...]) -> list:
-    results = []
-    for level in levels:
-        run_dir = directory / f"refinement_{level}"
-        run_dir.mkdir()
-        _copy_inputs(run_dir)
-        results.append(module.run(run_dir, level))
-    for result in results:
-        print(
-            f"refinement {result.refinement}: h = {result.spacing:.4g}, "
-            f"b error {100 * result.b_error:.3f} % (fit {100 * result.b_fit_error:.3f} %), "
-            f"p0 error {100 * result.p0_error:.3f} %, "
-            f"Newton {sum(result.iterations)}, {result.wall_time:.1f} s"
-        )
-    for coarse, fine in zip(results[:-1], results[1:], strict=True):
-        ratio = coarse.spacing / fine.spacing
-        print(
-            f"observed order {coarse.refinement}->{fine.refinement}: "
-            f"b {math.log(coarse.b_error / fine.b_error) / math.log(ratio):.2f}, "
-            f"p0 {math.log(coarse.p0_error / fine.p0_error) / math.log(ratio):.2f}"
-        )
-    return results
+def _errors(result) -> str:
+    return (
+        f"b error {100 * result.b_error:.3f} % (fit {100 * result.b_fit_error:.3f} %), "
+        f"p0 error {100 * result.p0_error:.3f} %"
+    )
 
 
 @pytest.mark.slow
 def test_hertz_2d_converges_with_refinement(tmp_path: Path) -> None:
-    results = _study(_example_module(), tmp_path, STUDY_LEVELS)
+    results = common.study(EXAMPLE, _example_module(), tmp_path, STUDY_LEVELS, _errors, ("b", "p0"))
     assert all(result.converged for result in results)
     assert [r.p0_error for r in results] == sorted((r.p0_error for r in results), reverse=True)
     # The moment estimate of b falls monotonically: measured 1.06, 0.15, 0.08 %. The fitted b does

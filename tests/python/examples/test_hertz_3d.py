@@ -8,33 +8,20 @@ runs three nested refinements (h halved each time) in-process.
 
 from __future__ import annotations
 
-import importlib.util
 import json
 import math
-import shutil
-import subprocess
-import sys
 from pathlib import Path
 
+import hertz_examples_common as common
 import numpy as np
 import pytest
 
-EXAMPLE = Path(__file__).parents[3] / "examples" / "hertz_3d"
+EXAMPLE = common.EXAMPLES / "hertz_3d"
 STUDY_LEVELS = (1, 2, 3)
 
 
 def _load(name: str):
-    spec = importlib.util.spec_from_file_location(name, EXAMPLE / f"{name}.py")
-    module = importlib.util.module_from_spec(spec)
-    assert spec.loader is not None
-    sys.modules[spec.name] = module  # dataclasses look their module up there
-    spec.loader.exec_module(module)
-    return module
-
-
-def _copy_inputs(directory: Path) -> None:
-    for name in ("ProjectParameters.json", "materials.json"):
-        shutil.copy(EXAMPLE / name, directory / name)
+    return common.load(EXAMPLE, name)
 
 
 def _group(mesh, name: str) -> np.ndarray:
@@ -56,13 +43,7 @@ def test_runner_uses_its_own_mesh_script_after_the_2d_runner() -> None:
     runner's plain ``import make_mesh`` returned the 2D script: the study wrote a 2D mesh and
     failed ("line" cells), then passed when rerun alone.
     """
-    spec = importlib.util.spec_from_file_location(
-        "run_hertz_2d", EXAMPLE.parent / "hertz_2d" / "run_hertz_2d.py"
-    )
-    runner_2d = importlib.util.module_from_spec(spec)
-    assert spec.loader is not None
-    sys.modules[spec.name] = runner_2d
-    spec.loader.exec_module(runner_2d)
+    runner_2d = common.load(EXAMPLE.parent / "hertz_2d", "run_hertz_2d")
     assert Path(_load("run_hertz_3d").make_mesh.__file__) == EXAMPLE / "make_mesh.py"
     assert Path(runner_2d.make_mesh.__file__) == EXAMPLE.parent / "hertz_2d" / "make_mesh.py"
 
@@ -141,22 +122,7 @@ def test_estimators_recover_the_hertz_profile() -> None:
 
 
 def test_hertz_3d_coarsest_mesh_runs_and_converges(tmp_path: Path) -> None:
-    _copy_inputs(tmp_path)
-    run = subprocess.run(
-        [sys.executable, str(EXAMPLE / "run_hertz_3d.py"), "--refinement", "1", "--quiet"],
-        cwd=tmp_path,
-        capture_output=True,
-        text=True,
-        timeout=300,
-    )
-    assert run.returncode == 0, run.stdout + run.stderr
-    for name in ("hertz_3d.msh", "hertz_3d_pressure.png", "hertz_3d_summary.txt"):
-        assert (tmp_path / name).stat().st_size > 0, name
-    assert (tmp_path / "hertz_3d_pressure.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-    assert len(list((tmp_path / "vtk_output").glob("Structure_0_*.vtu"))) == 4
-    summary = (tmp_path / "hertz_3d_summary.txt").read_text()
-    assert "all steps converged" in summary
-    assert summary in run.stdout
+    common.run_coarsest(EXAMPLE, tmp_path)
 
     # Same run, evaluated in-process from the files it left (mesh reused, not rewritten).
     result = _load("run_hertz_3d").run(tmp_path, None)
@@ -172,29 +138,19 @@ def test_hertz_3d_coarsest_mesh_runs_and_converges(tmp_path: Path) -> None:
     assert result.contact_force == pytest.approx(result.load, rel=0.01)
 
 
+def _errors(result) -> str:
+    return (
+        f"DoFs {result.dofs}, "
+        f"a error {100 * result.a_error:.3f} %, p0 error {100 * result.p0_error:.3f} % "
+        f"(fit: a {100 * result.a_fit_error:.3f} %, p0 {100 * result.p0_fit_error:.3f} %)"
+    )
+
+
 @pytest.mark.slow
 def test_hertz_3d_converges_with_refinement(tmp_path: Path) -> None:
-    module = _load("run_hertz_3d")
-    results = []
-    for level in STUDY_LEVELS:
-        run_dir = tmp_path / f"refinement_{level}"
-        run_dir.mkdir()
-        _copy_inputs(run_dir)
-        results.append(module.run(run_dir, level))
-    for result in results:
-        print(
-            f"refinement {result.refinement}: h = {result.spacing:.4g}, DoFs {result.dofs}, "
-            f"a error {100 * result.a_error:.3f} %, p0 error {100 * result.p0_error:.3f} % "
-            f"(fit: a {100 * result.a_fit_error:.3f} %, p0 {100 * result.p0_fit_error:.3f} %), "
-            f"Newton {sum(result.iterations)}, {result.wall_time:.1f} s"
-        )
-    for coarse, fine in zip(results[:-1], results[1:], strict=True):
-        ratio = coarse.spacing / fine.spacing
-        print(
-            f"observed order {coarse.refinement}->{fine.refinement}: "
-            f"a {math.log(coarse.a_error / fine.a_error) / math.log(ratio):.2f}, "
-            f"p0 {math.log(coarse.p0_error / fine.p0_error) / math.log(ratio):.2f}"
-        )
+    results = common.study(
+        EXAMPLE, _load("run_hertz_3d"), tmp_path, STUDY_LEVELS, _errors, ("a", "p0")
+    )
     assert all(result.converged for result in results)
     # The moment estimates (a from sum(r^2 f) / sum(f), p0 = 3F / (2 pi a^2)) are the checked
     # ones: measured a 10.2, 0.42, 0.03 % and p0 17.6, 0.84, 0.07 %. The fit is not monotone
@@ -221,7 +177,7 @@ def test_hertz_3d_with_friction_closes_from_an_open_gap(tmp_path: Path) -> None:
     results = []
     for run_dir, frictional in ((frictionless_dir, False), (frictional_dir, True)):
         run_dir.mkdir()
-        _copy_inputs(run_dir)
+        common.copy_inputs(EXAMPLE, run_dir)
         if frictional:
             path = run_dir / "ProjectParameters.json"
             parameters = json.loads(path.read_text())
