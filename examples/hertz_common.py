@@ -1,9 +1,11 @@
 """What the Hertz and Cattaneo-Mindlin examples share: meshing, width estimates, E*, settings.
 
 Mesh grading and gmsh groups, the contact width estimates, E*, loading a folder's script by path
-and the contact process settings; for the Hertz runners also the run, the result's common fields
-(``HertzRun``: each runner adds its width b or a), the Newton record, the summary's frame, the
-pressure plot and the command line.
+and the contact process settings, the command line and the writing of the outputs; for the Hertz
+runners also the run, the result's common fields (``HertzRun``: each runner adds its width b or
+a), the Newton record, the summary's frame and the pressure plot; for the Cattaneo-Mindlin runners
+the inputs with the friction coefficient, the timed recording analysis and the result's common
+fields (``CattaneoMindlinRun``).
 
 Both examples measure an elliptic pressure profile p(c) = p0 sqrt(1 - c^2/w^2) (c = x in 2D, the
 radius r in 3D; w = b or a) two ways: a least-squares fit of p^2 against c^2, and the second
@@ -189,6 +191,136 @@ def friction_coefficient(parameters: dict) -> float:
     return float(contact_parameters(parameters)["friction_coefficients"]["0"])
 
 
+def frictional_inputs(workdir: Path, example_dir: Path) -> tuple[dict, Path, Path, float]:
+    """(parameters tree, its file, materials file, mu) of an example run in ``workdir``.
+
+    The inputs are the working folder's, else the example's own (``example_inputs``); the tree
+    names the materials file by its absolute path.
+    """
+    parameters_path, materials = example_inputs(workdir, example_dir)
+    parameters = json.loads(parameters_path.read_text(encoding="utf-8"))
+    parameters["solver_settings"]["material_import_settings"]["materials_filename"] = str(materials)
+    return parameters, parameters_path, materials, friction_coefficient(parameters)
+
+
+def timed_analysis(
+    workdir: Path,
+    analysis_class: Callable[..., Any],
+    parameters: dict,
+    parameters_path: Path,
+    quiet: bool,
+    **options: Any,
+) -> tuple[Any, float]:
+    """(analysis, wall time) of ``analysis_class`` run on ``parameters`` in ``workdir``.
+
+    ``options`` go to the class (with the model, the parameters, their folder and the reporter).
+    """
+    import contact_app as ca
+    from contact_app.analysis.reporting import Reporter
+
+    with working_directory(workdir):
+        start = time.perf_counter()
+        analysis = analysis_class(
+            ca.Model(),
+            parameters,
+            base_dir=parameters_path.parent,
+            reporter=Reporter(quiet=quiet),
+            # The runner reports every step, NOT CONVERGED ones too (exit 1), so it goes on
+            # from them (the default stops at the first: docs/running.md "Non-convergence").
+            stop_on_non_convergence=False,
+            **options,
+        )
+        analysis.Run()
+        elapsed = time.perf_counter() - start
+    return analysis, elapsed
+
+
+@dataclass(kw_only=True)
+class CattaneoMindlinRun:
+    """What a Cattaneo-Mindlin run measured in both dimensions; each runner adds its own.
+
+    A runner's result defines ``c_over_a_analytic`` (its law of c/a in Q/(mu P)).
+    """
+
+    refinement: float | None
+    spacing: float  # slave node spacing at the contact centre
+    nodes: int
+    elements: int
+    mu: float
+    load: float  # the normal load on the whole body: P' (2D), P (3D)
+    tangential_load: float  # Q' (2D), Q (3D)
+    effective_modulus: float
+    a_analytic: float
+    p0_analytic: float
+    a: float  # moment estimate
+    c_deficit: float  # second moment of the deficit mu p - |q|
+    base_reaction_x: float
+    coulomb_slip_deviation: float  # max | |q| / (mu p) - 1 | over the slip nodes
+    stick_max_ratio: float  # max |q| / (mu p) over the stick nodes
+    max_slip_angle: float  # max angle between t and +WEIGHTED_SLIP over the slip nodes
+    steps: list[Any]
+    wall_time: float
+    profile: list[Any] = field(default_factory=list)
+
+    @property
+    def ratio(self) -> float:
+        """Q/(mu P) applied."""
+        return self.tangential_load / (self.mu * self.load)
+
+    @property
+    def c_over_a_analytic(self) -> float:
+        """Analytic c/a (defined by each runner's result)."""
+        raise NotImplementedError
+
+    @property
+    def c_analytic(self) -> float:
+        """Analytic stick half-width (2D) or radius (3D)."""
+        return self.c_over_a_analytic * self.a_analytic
+
+    @property
+    def c_deficit_error(self) -> float:
+        """Relative error of the deficit estimate of c."""
+        return relative_error(self.c_deficit, self.c_analytic)
+
+    @property
+    def a_error(self) -> float:
+        """Relative error of the contact half-width or radius (moment estimate)."""
+        return relative_error(self.a, self.a_analytic)
+
+    @property
+    def normal_phase_shear(self) -> float:
+        """Max shear traction after the last normal step (t = 1), where the theory has none."""
+        pressed = [step for step in self.steps if step.time <= 1.0 + 1e-9]
+        return pressed[-1].max_shear if pressed else math.nan
+
+    @property
+    def iterations(self) -> list[int]:
+        """Newton iterations per step."""
+        return [step.iterations for step in self.steps]
+
+    @property
+    def converged(self) -> bool:
+        """Every step converged."""
+        return bool(self.steps) and all(step.converged for step in self.steps)
+
+    @property
+    def active(self) -> list[Any]:
+        """The ACTIVE slave nodes."""
+        return [node for node in self.profile if node.active]
+
+    def analytic_traction(self, c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(p, q) of Hertz and Cattaneo-Mindlin at ``c`` (x in 2D, the radius r in 3D)."""
+        a, stick_width, p0 = self.a_analytic, self.c_analytic, self.p0_analytic
+        p = p0 * np.sqrt(np.clip(1.0 - (c / a) ** 2, 0.0, None))
+        stick = (
+            self.mu
+            * p0
+            * (stick_width / a)
+            * np.sqrt(np.clip(1.0 - (c / stick_width) ** 2, 0.0, None))
+        )
+        return p, self.mu * p - stick
+
+
 def run_example(
     workdir: Path,
     refinement: int | None,
@@ -223,6 +355,11 @@ def run_example(
     return result
 
 
+def relative_error(value: float, reference: float) -> float:
+    """|value - reference| / reference."""
+    return abs(value - reference) / reference
+
+
 @dataclass(kw_only=True)
 class HertzRun:
     """What a Hertz run measured in both dimensions; each runner adds its width w (b or a)."""
@@ -244,7 +381,7 @@ class HertzRun:
     @property
     def p0_error(self) -> float:
         """Relative error of the peak pressure."""
-        return abs(self.p0 - self.p0_analytic) / self.p0_analytic
+        return relative_error(self.p0, self.p0_analytic)
 
 
 def newton_record(analysis: Any) -> dict[str, Any]:
@@ -329,27 +466,53 @@ def plot_pressure(
     plt.close(fig)
 
 
+def write_outputs(
+    result: Any,
+    workdir: Path,
+    summary: Callable[[Any], str],
+    plot: Callable[[Any, Path], None],
+    summary_name: str,
+    plot_name: str,
+) -> str:
+    """Write the summary and the plot of ``result`` into ``workdir``; return the summary."""
+    text = summary(result)
+    (workdir / summary_name).write_text(text + "\n", encoding="utf-8")
+    plot(result, workdir / plot_name)
+    return text
+
+
 def example_main(
     argv: list[str] | None,
-    description: str,
+    doc: str,
     run: Callable[..., Any],
     summary: Callable[[Any], str],
     plot: Callable[[Any, Path], None],
     summary_name: str,
     plot_name: str,
+    refinement_type: type = int,
+    ratio: tuple[str, float] | None = None,
 ) -> int:
-    """Run, write the plot and the summary, print the summary; 1 if a step did not converge."""
-    parser = argparse.ArgumentParser(description=description)
+    """Run, write the plot and the summary, print the summary; 1 if a step did not converge.
+
+    The first line of ``doc`` (the runner's docstring) describes the command. ``ratio`` = (its
+    name, its default) adds the option ``--ratio`` (Q/(mu P)), passed to ``run`` after the
+    refinement.
+    """
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
     parser.add_argument(
-        "--refinement", type=int, help="write the mesh at this level (1 = coarsest)"
+        "--refinement", type=refinement_type, help="write the mesh at this level (1 = coarsest)"
     )
+    if ratio is not None:
+        name, default = ratio
+        parser.add_argument(
+            "--ratio", type=float, default=default, help=f"{name}, in (0, 1) (default {default})"
+        )
     parser.add_argument("--quiet", action="store_true", help="no step table")
     args = parser.parse_args(argv)
     workdir = Path.cwd()
-    result = run(workdir, args.refinement, quiet=args.quiet)
-    text = summary(result)
-    (workdir / summary_name).write_text(text + "\n", encoding="utf-8")
-    plot(result, workdir / plot_name)
+    extra = () if ratio is None else (args.ratio,)
+    result = run(workdir, args.refinement, *extra, quiet=args.quiet)
+    text = write_outputs(result, workdir, summary, plot, summary_name, plot_name)
     print(text)
     print(f"outputs: {workdir / plot_name}, {workdir / summary_name}, {workdir / 'vtk_output'}")
     return 0 if result.converged else 1

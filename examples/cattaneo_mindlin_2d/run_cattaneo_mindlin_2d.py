@@ -38,33 +38,21 @@ when every step converged, 1 otherwise.
 
 from __future__ import annotations
 
-import argparse
-import json
 import math
 import sys
-import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 import contact_app as ca
 from contact_app.analysis import StructuralMechanicsAnalysis
-from contact_app.analysis.reporting import Reporter
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
-from hertz_common import (  # noqa: E402  (examples/hertz_common.py)
-    effective_modulus,
-    example_inputs,
-    fit_elliptic_profile,
-    friction_coefficient,
-    load_script,
-    second_moment_width,
-    working_directory,
-)
+import hertz_common as common  # noqa: E402  (examples/hertz_common.py)
 
-make_mesh = load_script("cattaneo_mindlin_2d_make_mesh", HERE / "make_mesh.py")
+make_mesh = common.mesh_script(HERE)
 
 MESH = "cattaneo_mindlin_2d.msh"
 PLOT = "cattaneo_mindlin_2d_traction.png"
@@ -74,6 +62,7 @@ DEFAULT_RATIO = 0.5  # Q'/(mu P'): c/a = sqrt(0.5) = 0.707
 LINE_PRESSURE = 6.25  # N/mm^2 on the top of length 2R: P' = 125 N/mm, as hertz_2d
 TOP_LENGTH = 2.0 * make_mesh.RADIUS
 RAMP = "min(max(t - 1.0, 0.0), 1.0)"  # Q' from t = 1 to t = 2
+OPTIONS = {"ratio": ("Q'/(mu P')", DEFAULT_RATIO)}  # of the command line
 
 
 def load_values(ratio: float, mu: float) -> list[str | float]:
@@ -123,51 +112,22 @@ class StepState:
     max_shear: float  # max |q| over the active nodes
 
 
-@dataclass
-class CattaneoMindlinResult:
+@dataclass(kw_only=True)
+class CattaneoMindlinResult(common.CattaneoMindlinRun):
     """What one run measured, next to the analytic values."""
 
-    refinement: int | None
-    spacing: float  # slave node spacing over the contact
-    nodes: int
-    elements: int
-    mu: float
-    load: float  # P'
-    tangential_load: float  # Q'
     applied_moment: float  # of the top loads about the contact point (0 up to round-off)
-    effective_modulus: float
-    a_analytic: float
-    p0_analytic: float
-    a: float  # moment estimate
     p0: float  # semi-ellipse fit
     c_right: float  # midpoint between the outermost stick node and the next node, x > 0
     c_left: float  # same for x < 0 (negative)
-    c_deficit: float  # second moment of the deficit mu p - q
     contact_tangential_force: float  # sum(q L) over the active nodes
     contact_normal_force: float  # sum(p L)
-    base_reaction_x: float
-    coulomb_slip_deviation: float  # max | q / (mu p) - 1 | over the slip nodes
-    stick_max_ratio: float  # max q / (mu p) over the stick nodes
-    max_slip_angle: float  # max angle between t and +WEIGHTED_SLIP over the slip nodes
     stick_contiguous: bool  # no slip node between two stick nodes
-    steps: list[StepState]
-    wall_time: float
-    profile: list[SlaveNode] = field(default_factory=list)
-
-    @property
-    def ratio(self) -> float:
-        """Q'/(mu P') applied."""
-        return self.tangential_load / (self.mu * self.load)
 
     @property
     def c_over_a_analytic(self) -> float:
         """sqrt(1 - Q'/(mu P'))."""
         return math.sqrt(1.0 - self.ratio)
-
-    @property
-    def c_analytic(self) -> float:
-        """Analytic stick half-width."""
-        return self.c_over_a_analytic * self.a_analytic
 
     @property
     def c(self) -> float:
@@ -180,19 +140,9 @@ class CattaneoMindlinResult:
         return abs(self.c - self.c_analytic) / self.c_analytic
 
     @property
-    def c_deficit_error(self) -> float:
-        """Relative error of the deficit estimate of c."""
-        return abs(self.c_deficit - self.c_analytic) / self.c_analytic
-
-    @property
     def stick_offset(self) -> float:
         """Centre of the stick set (0 by symmetry)."""
         return 0.5 * (self.c_right + self.c_left)
-
-    @property
-    def a_error(self) -> float:
-        """Relative error of the contact half-width (moment estimate)."""
-        return abs(self.a - self.a_analytic) / self.a_analytic
 
     @property
     def p0_error(self) -> float:
@@ -203,34 +153,6 @@ class CattaneoMindlinResult:
     def tangential_force_error(self) -> float:
         """Relative difference between sum(q L) and Q'."""
         return abs(self.contact_tangential_force - self.tangential_load) / self.tangential_load
-
-    @property
-    def normal_phase_shear(self) -> float:
-        """Max |q| after the last normal-load step (t = 1), where the theory has none."""
-        pressed = [step for step in self.steps if step.time <= 1.0 + 1e-9]
-        return pressed[-1].max_shear if pressed else math.nan
-
-    @property
-    def iterations(self) -> list[int]:
-        """Newton iterations per step."""
-        return [step.iterations for step in self.steps]
-
-    @property
-    def converged(self) -> bool:
-        """Every step converged."""
-        return bool(self.steps) and all(step.converged for step in self.steps)
-
-    @property
-    def active(self) -> list[SlaveNode]:
-        """The ACTIVE slave nodes."""
-        return [node for node in self.profile if node.active]
-
-    def analytic_traction(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """(p, q) of Hertz and Cattaneo-Mindlin at ``x``."""
-        a, c, p0 = self.a_analytic, self.c_analytic, self.p0_analytic
-        p = p0 * np.sqrt(np.clip(1.0 - (x / a) ** 2, 0.0, None))
-        stick = self.mu * p0 * (c / a) * np.sqrt(np.clip(1.0 - (x / c) ** 2, 0.0, None))
-        return p, self.mu * p - stick
 
 
 def stick_half_width(nodes: list[SlaveNode]) -> tuple[float, float]:
@@ -331,7 +253,7 @@ def evaluate(analysis: _RecordingAnalysis, materials: Path, mu: float) -> Cattan
     """Measure a, p0, c and the forces on a finished analysis."""
     main = analysis.model.GetModelPart("Structure")
     load, tangential, moment = _applied_loads(main)
-    modulus = effective_modulus(materials)
+    modulus = common.effective_modulus(materials)
     a_analytic = math.sqrt(4.0 * load * make_mesh.RADIUS / (math.pi * modulus))
     profile = slave_profile(main)
     active = [node for node in profile if node.active]
@@ -340,10 +262,10 @@ def evaluate(analysis: _RecordingAnalysis, materials: Path, mu: float) -> Cattan
     q = np.array([node.q for node in active])
     length = np.array([node.length for node in active])
     if len(active) >= 2:
-        a = second_moment_width(x, p * length, 4.0)
-        _, p0 = fit_elliptic_profile(x, p, "semi-ellipse")
+        a = common.second_moment_width(x, p * length, 4.0)
+        _, p0 = common.fit_elliptic_profile(x, p, "semi-ellipse")
         deficit = np.clip(mu * p - np.abs(q), 0.0, None) * length
-        c_deficit = second_moment_width(x, deficit, 4.0) if deficit.sum() > 0.0 else math.nan
+        c_deficit = common.second_moment_width(x, deficit, 4.0) if deficit.sum() > 0.0 else math.nan
     else:
         a = p0 = c_deficit = math.nan
     right, left = stick_half_width(profile)
@@ -404,26 +326,12 @@ def run(
         refinement = DEFAULT_REFINEMENT
     if refinement is not None:
         make_mesh.write_mesh(mesh, refinement)
-    parameters_path, materials = example_inputs(workdir, HERE)
-    parameters = json.loads(parameters_path.read_text(encoding="utf-8"))
-    parameters["solver_settings"]["material_import_settings"]["materials_filename"] = str(materials)
-    mu = friction_coefficient(parameters)
+    parameters, parameters_path, materials, mu = common.frictional_inputs(workdir, HERE)
     load_process = parameters["processes"]["loads_process_list"][0]["Parameters"]
     load_process["value"] = load_values(ratio, mu)
-    with working_directory(workdir):
-        start = time.perf_counter()
-        analysis = _RecordingAnalysis(
-            ca.Model(),
-            parameters,
-            base_dir=parameters_path.parent,
-            reporter=Reporter(quiet=quiet),
-            # The runner reports every step, NOT CONVERGED ones too (exit 1), so it goes on
-            # from them (the default stops at the first: docs/running.md "Non-convergence").
-            stop_on_non_convergence=False,
-            full_ratio=ratio,
-        )
-        analysis.Run()
-        elapsed = time.perf_counter() - start
+    analysis, elapsed = common.timed_analysis(
+        workdir, _RecordingAnalysis, parameters, parameters_path, quiet, full_ratio=ratio
+    )
     result = evaluate(analysis, materials, mu)
     result.refinement = refinement  # None: an existing mesh of unknown level was reused
     result.wall_time = elapsed
@@ -493,10 +401,7 @@ def summary(result: CattaneoMindlinResult) -> str:
 
 def write_outputs(result: CattaneoMindlinResult, workdir: Path) -> str:
     """Write the summary and the plot into ``workdir``; return the summary."""
-    text = summary(result)
-    (workdir / SUMMARY).write_text(text + "\n", encoding="utf-8")
-    plot(result, workdir / PLOT)
-    return text
+    return common.write_outputs(result, workdir, summary, plot, SUMMARY, PLOT)
 
 
 def plot(result: CattaneoMindlinResult, path: Path) -> None:
@@ -549,24 +454,7 @@ def plot(result: CattaneoMindlinResult, path: Path) -> None:
 
 def main(argv: list[str] | None = None) -> int:
     """Run, write the plot and the summary, print the summary; 1 if a step did not converge."""
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument(
-        "--refinement", type=int, help="write the mesh at this level (1 = coarsest)"
-    )
-    parser.add_argument(
-        "--ratio",
-        type=float,
-        default=DEFAULT_RATIO,
-        help=f"Q'/(mu P'), in (0, 1) (default {DEFAULT_RATIO})",
-    )
-    parser.add_argument("--quiet", action="store_true", help="no step table")
-    args = parser.parse_args(argv)
-    workdir = Path.cwd()
-    result = run(workdir, args.refinement, args.ratio, quiet=args.quiet)
-    text = write_outputs(result, workdir)
-    print(text)
-    print(f"outputs: {workdir / PLOT}, {workdir / SUMMARY}, {workdir / 'vtk_output'}")
-    return 0 if result.converged else 1
+    return common.example_main(argv, __doc__, run, summary, plot, SUMMARY, PLOT, **OPTIONS)
 
 
 if __name__ == "__main__":

@@ -39,12 +39,9 @@ Writes ``cattaneo_mindlin_3d_traction.png``, ``cattaneo_mindlin_3d_summary.txt``
 
 from __future__ import annotations
 
-import argparse
-import json
 import math
 import sys
-import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 import meshio
@@ -52,20 +49,12 @@ import numpy as np
 
 import contact_app as ca
 from contact_app.analysis import StructuralMechanicsAnalysis
-from contact_app.analysis.reporting import Reporter
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
-from hertz_common import (  # noqa: E402  (examples/hertz_common.py)
-    effective_modulus,
-    example_inputs,
-    friction_coefficient,
-    load_script,
-    second_moment_width,
-    working_directory,
-)
+import hertz_common as common  # noqa: E402  (examples/hertz_common.py)
 
-make_mesh = load_script("cattaneo_mindlin_3d_make_mesh", HERE / "make_mesh.py")
+make_mesh = common.mesh_script(HERE)
 
 MESH = "cattaneo_mindlin_3d.msh"
 PLOT = "cattaneo_mindlin_3d_traction.png"
@@ -74,6 +63,7 @@ DEFAULT_REFINEMENT = 2
 DEFAULT_RATIO = 0.5  # Q/(mu P): c/a = 0.5^(1/3) = 0.794
 PRESSURE = 10.0  # MPa on the flat top, as hertz_3d: P = 10 MPa x (meshed disc area) = 3129 N
 RAMP = "min(max(t - 1.0, 0.0), 1.0)"  # Q from t = 1 to t = 2
+OPTIONS = {"refinement_type": float, "ratio": ("Q/(mu P)", DEFAULT_RATIO)}  # of the command line
 GAUSS_2 = (-1.0 / math.sqrt(3.0), 1.0 / math.sqrt(3.0))
 
 
@@ -215,39 +205,15 @@ class StepState:
     coulomb_deviation: float  # max | |t| / (mu p) - 1 | over the slip nodes
 
 
-@dataclass
-class CattaneoMindlin3DResult:
-    """What one run measured, next to the analytic values."""
+@dataclass(kw_only=True)
+class CattaneoMindlin3DResult(common.CattaneoMindlinRun):
+    """What one run measured, next to the analytic values (load: P on the whole ball)."""
 
-    refinement: float | None
-    spacing: float  # slave surface interval at the pole
-    nodes: int
-    elements: int
-    mu: float
-    load: float  # P on the whole ball
-    tangential_load: float  # Q on the whole ball
     applied_moment: np.ndarray  # of the top loads about the contact point, half model
-    effective_modulus: float
-    a_analytic: float
-    p0_analytic: float
-    a: float  # moment estimate
     zone: StickZone
-    c_deficit: float  # second moment of the deficit mu p - |t|
     friction_force: np.ndarray  # 2 sum(-t A) over the active nodes (x, y, z); y: half model
     normal_force: float  # 2 sum(p A)
-    base_reaction_x: float  # 2 x the base's x reaction
-    coulomb_slip_deviation: float
-    stick_max_ratio: float  # max |t| / (mu p) over the stick nodes
-    max_slip_angle: float
     min_power: float
-    steps: list[StepState]
-    wall_time: float
-    profile: list[SlaveNode] = field(default_factory=list)
-
-    @property
-    def ratio(self) -> float:
-        """Q/(mu P) applied."""
-        return self.tangential_load / (self.mu * self.load)
 
     @property
     def c_over_a_analytic(self) -> float:
@@ -255,57 +221,14 @@ class CattaneoMindlin3DResult:
         return (1.0 - self.ratio) ** (1.0 / 3.0)
 
     @property
-    def c_analytic(self) -> float:
-        """Analytic stick radius."""
-        return self.c_over_a_analytic * self.a_analytic
-
-    @property
     def c_error(self) -> float:
         """Relative error of c (and of c/a) from the stick set."""
         return abs(self.zone.c - self.c_analytic) / self.c_analytic
 
     @property
-    def c_deficit_error(self) -> float:
-        """Relative error of the deficit estimate of c."""
-        return abs(self.c_deficit - self.c_analytic) / self.c_analytic
-
-    @property
-    def a_error(self) -> float:
-        """Relative error of the contact radius (moment estimate)."""
-        return abs(self.a - self.a_analytic) / self.a_analytic
-
-    @property
     def tangential_force_error(self) -> float:
         """Relative difference between 2 sum(q A) and Q."""
         return abs(self.friction_force[0] - self.tangential_load) / self.tangential_load
-
-    @property
-    def normal_phase_shear(self) -> float:
-        """Max |t| after the last normal step (t = 1), where the theory has none."""
-        pressed = [step for step in self.steps if step.time <= 1.0 + 1e-9]
-        return pressed[-1].max_shear if pressed else math.nan
-
-    @property
-    def iterations(self) -> list[int]:
-        """Newton iterations per step."""
-        return [step.iterations for step in self.steps]
-
-    @property
-    def converged(self) -> bool:
-        """Every step converged."""
-        return bool(self.steps) and all(step.converged for step in self.steps)
-
-    @property
-    def active(self) -> list[SlaveNode]:
-        """The ACTIVE slave nodes."""
-        return [node for node in self.profile if node.active]
-
-    def analytic_traction(self, r: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """(p, q) of Hertz and Mindlin at radius ``r``."""
-        a, c, p0 = self.a_analytic, self.c_analytic, self.p0_analytic
-        p = p0 * np.sqrt(np.clip(1.0 - (r / a) ** 2, 0.0, None))
-        stick = self.mu * p0 * (c / a) * np.sqrt(np.clip(1.0 - (r / c) ** 2, 0.0, None))
-        return p, self.mu * p - stick
 
 
 def slave_profile(main: ca.ModelPart) -> list[SlaveNode]:
@@ -397,7 +320,7 @@ def evaluate(analysis: _RecordingAnalysis, materials: Path, mu: float) -> Cattan
     main = analysis.model.GetModelPart("Structure")
     force, moment = _applied_loads(main)
     load, tangential = -2.0 * force[2], 2.0 * force[0]
-    modulus = effective_modulus(materials)
+    modulus = common.effective_modulus(materials)
     a_analytic = (3.0 * load * make_mesh.RADIUS / (4.0 * modulus)) ** (1.0 / 3.0)
     profile = slave_profile(main)
     active = [node for node in profile if node.active]
@@ -405,9 +328,9 @@ def evaluate(analysis: _RecordingAnalysis, materials: Path, mu: float) -> Cattan
     p = np.array([node.p for node in active])
     area = np.array([node.area for node in active])
     shear = np.array([node.shear for node in active])
-    a = second_moment_width(r, p * area, 2.5)
+    a = common.second_moment_width(r, p * area, 2.5)
     deficit = np.clip(mu * p - shear, 0.0, None) * area
-    c_deficit = second_moment_width(r, deficit, 2.5) if deficit.sum() > 0.0 else math.nan
+    c_deficit = common.second_moment_width(r, deficit, 2.5) if deficit.sum() > 0.0 else math.nan
     traction = np.array([node.traction for node in active])
     angle, cosine, coulomb = _slip_checks(profile, mu)
     sticking = [node for node in active if not node.slip]
@@ -462,27 +385,12 @@ def run(
     else:
         mesh = meshio.read(str(mesh_path))
     top = np.vstack([block.data for block in mesh.cells if block.type == "quad"])
-    parameters_path, materials = example_inputs(workdir, HERE)
-    parameters = json.loads(parameters_path.read_text(encoding="utf-8"))
-    parameters["solver_settings"]["material_import_settings"]["materials_filename"] = str(materials)
-    mu = friction_coefficient(parameters)
+    parameters, parameters_path, materials, mu = common.frictional_inputs(workdir, HERE)
     load_process = parameters["processes"]["loads_process_list"][0]["Parameters"]
     load_process["value"] = load_values(ratio, mu, *top_integrals(mesh.points, top))
-    with working_directory(workdir):
-        start = time.perf_counter()
-        analysis = _RecordingAnalysis(
-            ca.Model(),
-            parameters,
-            base_dir=parameters_path.parent,
-            reporter=Reporter(quiet=quiet),
-            # The runner reports every step, NOT CONVERGED ones too (exit 1), so it goes on
-            # from them (the default stops at the first: docs/running.md "Non-convergence").
-            stop_on_non_convergence=False,
-            full_ratio=ratio,
-            mu=mu,
-        )
-        analysis.Run()
-        elapsed = time.perf_counter() - start
+    analysis, elapsed = common.timed_analysis(
+        workdir, _RecordingAnalysis, parameters, parameters_path, quiet, full_ratio=ratio, mu=mu
+    )
     result = evaluate(analysis, materials, mu)
     result.refinement = refinement  # None: an existing mesh of unknown level was reused
     result.wall_time = elapsed
@@ -599,32 +507,12 @@ def plot(result: CattaneoMindlin3DResult, path: Path) -> None:
 
 def write_outputs(result: CattaneoMindlin3DResult, workdir: Path) -> str:
     """Write the summary and the plot into ``workdir``; return the summary."""
-    text = summary(result)
-    (workdir / SUMMARY).write_text(text + "\n", encoding="utf-8")
-    plot(result, workdir / PLOT)
-    return text
+    return common.write_outputs(result, workdir, summary, plot, SUMMARY, PLOT)
 
 
 def main(argv: list[str] | None = None) -> int:
     """Run, write the plot and the summary, print the summary; 1 if a step did not converge."""
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument(
-        "--refinement", type=float, help="write the mesh at this level (1 = coarsest)"
-    )
-    parser.add_argument(
-        "--ratio",
-        type=float,
-        default=DEFAULT_RATIO,
-        help=f"Q/(mu P), in (0, 1) (default {DEFAULT_RATIO})",
-    )
-    parser.add_argument("--quiet", action="store_true", help="no step table")
-    args = parser.parse_args(argv)
-    workdir = Path.cwd()
-    result = run(workdir, args.refinement, args.ratio, quiet=args.quiet)
-    text = write_outputs(result, workdir)
-    print(text)
-    print(f"outputs: {workdir / PLOT}, {workdir / SUMMARY}, {workdir / 'vtk_output'}")
-    return 0 if result.converged else 1
+    return common.example_main(argv, __doc__, run, summary, plot, SUMMARY, PLOT, **OPTIONS)
 
 
 if __name__ == "__main__":

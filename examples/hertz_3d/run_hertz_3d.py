@@ -241,7 +241,7 @@ def plot(result: HertzResult, path: Path) -> None:
 
 def main(argv: list[str] | None = None) -> int:
     """Run, write the plot and the summary, print the summary; 1 if a step did not converge."""
-    return common.example_main(argv, __doc__.splitlines()[0], run, summary, plot, SUMMARY, PLOT)
+    return common.example_main(argv, __doc__, run, summary, plot, SUMMARY, PLOT)
 
 
 if __name__ == "__main__":

@@ -45,7 +45,7 @@ def _copy_inputs(directory: Path, vtk: bool = True) -> None:
 def test_parameters_file_holds_the_default_loads() -> None:
     module = _example_module()
     parameters = json.loads((EXAMPLE / "ProjectParameters.json").read_text())
-    mu = module.friction_coefficient(parameters)
+    mu = module.common.friction_coefficient(parameters)
     assert mu == 0.3
     values = parameters["processes"]["loads_process_list"][0]["Parameters"]["value"]
     # `contact-app run ProjectParameters.json` runs the example's default case.
