@@ -2353,6 +2353,22 @@ class VariableUtils:
         """
         Copies every historical value of buffer step source into step destination on the nodes of model_part (restarting a step from the last converged state: source 1, destination 0).
         """
+    @typing.overload
+    def SetFlag(self, flag: Flags, value: bool, entities: NodesArray) -> None:
+        """
+        Sets flag to value on every node of a model part's Nodes (looped in C++).
+        """
+    @typing.overload
+    def SetFlag(self, flag: Flags, value: bool, entities: ConditionsArray) -> None:
+        """
+        Sets flag to value on every condition of a model part's Conditions (looped in C++).
+        """
+    @typing.overload
+    def SetFlag(self, flag: Flags, value: bool, entities: ElementsArray) -> None:
+        """
+        Sets flag to value on every element of a model part's Elements (looped in C++).
+        """
+    @typing.overload
     def SetFlag(self, flag: Flags, value: bool, entities: collections.abc.Iterable) -> None:
         """
         Sets flag to value on every node / element / condition of the iterable.

@@ -15,12 +15,6 @@ namespace {
 using ModelPartClass = py::class_<ModelPart, Flags, std::shared_ptr<ModelPart>>;
 constexpr auto kInternal = py::return_value_policy::reference_internal;
 
-/// Read-only view of a model part container (mp.Nodes, ...); the property keeps the model part alive.
-template <class T>
-struct ContainerView {
-    const EntityContainer<T>* container;
-};
-
 /// Index-based iterator, so that a container changed during the loop cannot leave it dangling.
 template <class T>
 struct ContainerIterator {

@@ -18,6 +18,15 @@ namespace {
 /// Stateless holder of nodal helpers (Kratos VariableUtils).
 struct VariableUtils {};
 
+/// VariableUtils.SetFlag over a model part container (mp.Nodes, ...), looped in C++: over a Python iterable each
+/// entity costs a cast (0.27 ms for 100 nodes against 0.6 µs), and the contact processes call it every step.
+template <class T>
+auto SetFlagOnContainer() {
+    return [](const VariableUtils&, const Flags& flag, bool value, const ContainerView<T>& view) {
+        for (const auto& entity : *view.container) entity->Set(flag, value);
+    };
+}
+
 
 // -- bulk arrays for the VTK output (one call per variable instead of one per node) --
 
@@ -256,6 +265,12 @@ void BindUtilities(py::module_& m) {
             py::arg("nodes"), py::arg_v("variable", VariableObject(DISPLACEMENT), "DISPLACEMENT"),
             py::arg("buffer_step") = 0,
             "Current coordinates = initial + historical variable (DISPLACEMENT) for every node of the iterable.")
+        .def("SetFlag", SetFlagOnContainer<Node>(), py::arg("flag"), py::arg("value"), py::arg("entities"),
+             "Sets flag to value on every node of a model part's Nodes (looped in C++).")
+        .def("SetFlag", SetFlagOnContainer<Condition>(), py::arg("flag"), py::arg("value"), py::arg("entities"),
+             "Sets flag to value on every condition of a model part's Conditions (looped in C++).")
+        .def("SetFlag", SetFlagOnContainer<Element>(), py::arg("flag"), py::arg("value"), py::arg("entities"),
+             "Sets flag to value on every element of a model part's Elements (looped in C++).")
         .def(
             "SetFlag",
             [](const VariableUtils&, const Flags& flag, bool value, py::iterable entities) {

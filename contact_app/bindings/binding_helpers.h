@@ -9,6 +9,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "contact_app/kernel/entity_container.h"
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/variable_data.h"
 
@@ -22,6 +23,13 @@ py::object VariableObject(const VariableData& variable);
 
 /// @throws InputError: @p variable holds a C++ object (pointer variables) that Python cannot read or write.
 [[noreturn]] void ThrowNotConvertible(const VariableData& variable);
+
+/// Read-only view of a model part container (mp.Nodes, ...); the property keeps the model part alive. Functions
+/// that take one directly (VariableUtils.SetFlag) loop in C++ instead of over a Python iterable.
+template <class T>
+struct ContainerView {
+    const EntityContainer<T>* container;
+};
 
 /// Python list of non-owned references, each keeping @p parent (their owner) alive.
 template <class T>
