@@ -157,7 +157,9 @@ def check_mortar_type(contact: Parameters) -> MortarType:
 
 
 def contact_status(
-    main: ca.ModelPart, frictional: bool, area: Callable[[NDArray[np.int64]], NDArray[np.float64]]
+    main: ca.ModelPart,
+    frictional: bool,
+    area: Callable[[ca.ModelPart, NDArray[np.int64]], NDArray[np.float64]],
 ) -> tuple[int, int, int, float]:
     """(active slave nodes, slipping ones, live pairs, max penetration) of the "Contact" part.
 
@@ -167,8 +169,8 @@ def contact_status(
     Args:
         main: the main model part (with "Contact" and "ComputingContact" children).
         frictional: count the SLIP nodes (frictionless runs leave SLIP set without meaning).
-        area: the nodal areas A of the given node ids, each node's WEIGHTED_GAP is divided by
-            (penetration = -g / A).
+        area: the nodal areas A of the given node ids of the "Contact" part, each node's
+            WEIGHTED_GAP is divided by (penetration = -g / A).
     """
     if not main.HasSubModelPart("Contact"):
         return (0, 0, 0, 0.0)
@@ -184,7 +186,7 @@ def contact_status(
     penetration = 0.0
     if main.HasNodalSolutionStepVariable(ca.WEIGHTED_GAP) and active_ids.size > 0:
         gaps = _core.BulkNodalValues(part, active_ids, ca.WEIGHTED_GAP, True)[0][:, 0]
-        areas = area(active_ids)
+        areas = area(part, active_ids)
         covered = areas > 0.0
         if np.any(covered):
             penetration = max(0.0, float(np.max(-gaps[covered] / areas[covered])))
@@ -397,7 +399,7 @@ class ContactSolverMixin(SolverMixinBase):
         return contact_status(
             main,
             contact.Is(ca.SLIP),
-            lambda ids: np.array([areas.get(int(i), 0.0) for i in ids], dtype=float),
+            lambda _, ids: np.array([areas.get(int(i), 0.0) for i in ids], dtype=float),
         )
 
     def FinalizeSolutionStep(self) -> None:

@@ -186,12 +186,8 @@ class MPCContactSolverMixin(SolverMixinBase):
 
         The penetration divides WEIGHTED_GAP by the lumped slave area NODAL_MAUX of the criterion.
         """
-        main = self.main_model_part
-        if not main.HasSubModelPart("Contact"):
-            return (0, 0, 0, 0.0)
-        contact = main.GetSubModelPart("Contact")
         return contact_status(
-            main,
+            self.main_model_part,
             self.contact_type == "Frictional",
-            lambda ids: _core.BulkNodalValues(contact, ids, ca.NODAL_MAUX, False)[0][:, 0],
+            lambda part, ids: _core.BulkNodalValues(part, ids, ca.NODAL_MAUX, False)[0][:, 0],
         )
