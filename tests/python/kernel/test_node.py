@@ -153,3 +153,24 @@ def test_variable_utils_update_current_position(rectangle: ca.ModelPart) -> None
     node.SetSolutionStepValue(ca.DISPLACEMENT_X, 0, 0.0)
     ca.VariableUtils().UpdateCurrentPosition([node])
     assert node.X == 2.0 and node.X0 == 2.0
+
+
+def test_variable_utils_set_flag_on_a_container_sets_exactly_its_entities(
+    rectangle: ca.ModelPart,
+) -> None:
+    properties = rectangle.GetProperties(1)
+    element = rectangle.CreateNewElement("Element2D4N", 1, [1, 2, 5, 4], properties)
+    condition = rectangle.CreateNewCondition("LineCondition2D2N", 1, [1, 2], properties)
+    left = rectangle.CreateSubModelPart("Left")
+    left.AddNodes([1, 4])
+    utils = ca.VariableUtils()
+    utils.SetFlag(ca.SLIP, True, left.Nodes)  # the C++ loop over a model part's container
+    assert [node.Id for node in rectangle.Nodes if node.Is(ca.SLIP)] == [1, 4]
+    utils.SetFlag(ca.SLIP, False, rectangle.Nodes)
+    assert not any(node.Is(ca.SLIP) for node in rectangle.Nodes)
+    utils.SetFlag(ca.ACTIVE, True, rectangle.Conditions)
+    utils.SetFlag(ca.MARKER, True, rectangle.Elements)
+    assert condition.Is(ca.ACTIVE) and not element.Is(ca.ACTIVE)
+    assert element.Is(ca.MARKER) and not condition.Is(ca.MARKER)
+    utils.SetFlag(ca.SLIP, True, [rectangle.GetNode(6)])  # any iterable still works
+    assert [node.Id for node in rectangle.Nodes if node.Is(ca.SLIP)] == [6]
