@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_conditions/mortar_contact_condition.h"
 
+#include <type_traits>
+
 #include "automatic_differentiation/ad_helpers.h"
 #include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
@@ -197,9 +199,67 @@ SegmentationSettings MORTAR_CLASS::SegmentationSettingsFrom(const ProcessInfo& r
 }
 
 MORTAR_TEMPLATE
+bool MORTAR_CLASS::CouplesNodalNormals(const ProcessInfo& rCurrentProcessInfo) const {
+    // The penalty families only: the ALM ones gained nothing measurable and lost the 3D press fit's first step
+    // (docs/theory/mortar.md §7 "Normals that follow the iterate").
+    constexpr bool penalty = TF == FrictionalCase::FRICTIONLESS_PENALTY || TF == FrictionalCase::FRICTIONAL_PENALTY;
+    return penalty && !TNV && rCurrentProcessInfo.Has(CONSIDER_NORMAL_VARIATION) &&
+           rCurrentProcessInfo.GetValue(CONSIDER_NORMAL_VARIATION) != 0;
+}
+
+MORTAR_TEMPLATE
+bool MORTAR_CLASS::GetNodalNormalCoupling(int j, Matrix& rForcePerNormal) const {
+    if (mForcePerNormal.size() == 0) return false;
+    rForcePerNormal = mForcePerNormal.middleCols(j * TDim, TDim);
+    return true;
+}
+
+MORTAR_TEMPLATE
+void MORTAR_CLASS::RecordForcePerNormal(const NodeCoordinates<double, TDim, TNS>& x1,
+                                        const SpatialVector<double, TDim>& slave_normal,
+                                        const NodeCoordinates<double, TDim, TNM>& x2,
+                                        const NodeCoordinates<double, TDim, TNS>& normals,
+                                        const MultiplierVector& lambda,
+                                        const MortarIntegrator<TDim, TNS, TNM, Dual<NumCoordinateDofs>>& integrator,
+                                        const ProcessInfo& rCurrentProcessInfo) {
+    // The normals take the first d n_s derivative slots of the AD types the tangent already uses (d n_s ≤ d(n_s + n_m)
+    // ≤ MatrixSize), so this pass instantiates nothing new.
+    using Coordinate = Dual<NumCoordinateDofs>;
+    constexpr int normal_dofs = TDim * TNS;
+    const auto seeded = Seed<NumCoordinateDofs>(normals, 0);
+    const SpatialVector<Coordinate, TDim> center = slave_normal.template cast<Coordinate>();
+    const NodeCoordinates<Coordinate, TDim, TNS> slave = x1.template cast<Coordinate>();
+    const NodeCoordinates<Coordinate, TDim, TNM> master = x2.template cast<Coordinate>();
+    const auto pair = IntegrateMortarPair<TDim, TNS, TNM>(integrator, slave, center, master, seeded, true);
+    if (!pair.used) return;
+    const auto widen = [](const auto& m) {
+        Eigen::Matrix<ADScalar, std::decay_t<decltype(m)>::RowsAtCompileTime, std::decay_t<decltype(m)>::ColsAtCompileTime>
+            result;
+        for (Eigen::Index r = 0; r < m.rows(); ++r)
+            for (Eigen::Index c = 0; c < m.cols(); ++c) result(r, c) = Embed<MatrixSize>(m(r, c));
+        return result;
+    };
+    State<ADScalar> state;
+    state.x1 = x1.template cast<ADScalar>();
+    state.x2 = x2.template cast<ADScalar>();
+    state.normals = widen(seeded);
+    state.operators.D = widen(pair.operators.D);
+    state.operators.M = widen(pair.operators.M);
+    for (int i = 0; i < NumMultipliers; ++i) state.multipliers[i] = ADScalar(lambda[i]);
+    LocalVector<ADScalar> rhs;
+    for (int i = 0; i < MatrixSize; ++i) rhs[i] = ADScalar(0.0);
+    AddResidual(state, rCurrentProcessInfo, rhs);
+    mForcePerNormal = Jacobian(rhs).template leftCols<normal_dofs>();
+    AfterNormalPass();
+}
+
+MORTAR_TEMPLATE
 void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const ProcessInfo& rCurrentProcessInfo) {
     constexpr int slave_dofs = TDim * TNS, master_dofs = TDim * TNM;
-    if (pLhs) pLhs->setZero(MatrixSize, MatrixSize);
+    if (pLhs) {
+        pLhs->setZero(MatrixSize, MatrixSize);
+        mForcePerNormal.resize(0, 0);
+    }
     pRhs->setZero(MatrixSize);
     if (Is(ISOLATED)) return;
 
@@ -259,12 +319,21 @@ void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Pr
     }
     const MortarIntegrator<TDim, TNS, TNM, Coordinate> integrator(integration, segmentation);
     MortarPairIntegration<Coordinate, TDim, TNS, TNM> pair;
+    // Normals that follow the iterate, once the sets settled: the face-centre NORMAL is this face's own (differentiated
+    // here), the nodal ones are held here and their derivative recorded for NodalNormalCoupling.
+    const bool normals_follow = CouplesNodalNormals(rCurrentProcessInfo) && NormalsInTangent(rCurrentProcessInfo);
     if constexpr (TNV) {
         const auto nodal = WithValues(FaceNodalUnitNormals<TDim, TNS, Coordinate>(seeded_x1), normals);
         const SpatialVector<Coordinate, TDim> center =
             WithValues(FaceCenterUnitNormal<TDim, TNS, Coordinate>(seeded_x1), slave_normal);
         pair = IntegrateMortarPair<TDim, TNS, TNM>(integrator, seeded_x1, center, seeded_x2, nodal, true);
         state.normals = ToLocalDofs<MatrixSize, slave_dofs, master_dofs>(nodal);
+    } else if (normals_follow) {
+        const SpatialVector<Coordinate, TDim> center =
+            WithValues(FaceCenterUnitNormal<TDim, TNS, Coordinate>(seeded_x1), slave_normal);
+        const NodeCoordinates<Coordinate, TDim, TNS> held = normals.template cast<Coordinate>();
+        pair = IntegrateMortarPair<TDim, TNS, TNM>(integrator, seeded_x1, center, seeded_x2, held, true);
+        state.normals = normals.template cast<ADScalar>();
     } else {
         pair = IntegrateMortarPair<TDim, TNS, TNM>(integrator, seeded_x1, slave_normal, seeded_x2, normals, true);
         state.normals = normals.template cast<ADScalar>();
@@ -280,6 +349,8 @@ void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Pr
     operator_values.D = Values(pair.operators.D);
     operator_values.M = Values(pair.operators.M);
     InitializeResidual(operator_values, rCurrentProcessInfo);
+    // Before the main pass: a family that records coupling terms in its AD residual keeps the main pass's.
+    if (normals_follow) RecordForcePerNormal(x1, slave_normal, x2, normals, lambda, integrator, rCurrentProcessInfo);
     LocalVector<ADScalar> rhs;
     for (int i = 0; i < MatrixSize; ++i) rhs[i] = ADScalar(0.0);
     AddResidual(state, rCurrentProcessInfo, rhs);

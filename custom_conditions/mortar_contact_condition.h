@@ -5,6 +5,7 @@
 
 #include "automatic_differentiation/dual.h"
 #include "contact_app/kernel/exceptions.h"
+#include "custom_conditions/nodal_normal_coupling.h"
 #include "custom_conditions/pair_nodal_share.h"
 #include "custom_conditions/paired_condition.h"
 #include "custom_utilities/mortar_operators.h"
@@ -47,11 +48,13 @@ struct MortarPairState {
 /// residual RHS(q) (the force on the bodies, docs/theory/contact_residuals.md §1). The RHS alone is evaluated in
 /// double;
 /// the LHS = −∂RHS/∂q is the AD derivative of the same residual over q = [master u, slave u, λ], the normals
-/// held constant unless TNormalVariation. Reads INTEGRATION_ORDER_CONTACT, CONSIDER_TESSELLATION, THICKNESS
+/// held constant unless TNormalVariation. When the criteria recompute the normals every iteration (CONSIDER_NORMAL_VARIATION
+/// ≠ 0, moving mesh) a non-NV penalty pair differentiates its face-centre NORMAL exactly and records ∂RHS/∂n of the
+/// nodal normals for NodalNormalCoupling (nodal_normal_coupling.h). Reads INTEGRATION_ORDER_CONTACT, CONSIDER_TESSELLATION, THICKNESS
 /// (axisymmetric) from the Properties and DISTANCE_THRESHOLD, ZERO_TOLERANCE_FACTOR from the ProcessInfo.
 /// Not registered itself: DoFs, state encoding and residual come from the families.
 template <int TDim, int TNumNodes, FrictionalCase TFrictional, bool TNormalVariation, int TNumNodesMaster = TNumNodes>
-class MortarContactCondition : public PairedCondition {
+class MortarContactCondition : public PairedCondition, public NodalNormalCouplingSource {
 public:
     static constexpr int NumCoordinateDofs = TDim * (TNumNodes + TNumNodesMaster);
     static constexpr int MatrixSize = MortarMatrixSize(TDim, TNumNodes, TFrictional, TNumNodesMaster);
@@ -102,6 +105,10 @@ public:
     void Load(Serializer& rSerializer) override;
 
     virtual bool IsAxisymmetric() const { return false; }
+    /// True for the non-NV penalty families when CONSIDER_NORMAL_VARIATION ≠ 0 (the criteria move the nodal normals
+    /// every iteration).
+    bool CouplesNodalNormals(const ProcessInfo& rCurrentProcessInfo) const override;
+    bool GetNodalNormalCoupling(int j, Matrix& rForcePerNormal) const override;
     /// What this pair added to the nodal sums at the last explicit pass (pair_nodal_share.h).
     const PairNodalShare<TDim, TNumNodes>& NodalShare() const { return mNodalShare; }
     /// Written by the families' explicit pass (AddExplicitContribution).
@@ -124,12 +131,26 @@ protected:
     /// MODIFIED). The default does nothing.
     virtual void InitializeResidual(const MortarOperators<double, TNumNodes, TNumNodesMaster>& operators,
                                     const ProcessInfo& rCurrentProcessInfo) {}
+    /// Called after the AD pass that seeds the nodal normals (RecordForcePerNormal), before the main one: a family
+    /// that records coupling terms in its AD residual keeps their normal derivatives here. The default does nothing.
+    virtual void AfterNormalPass() {}
 
 private:
     /// Written by the families' explicit pass, read by their residuals through MakeNodalInterfaceMap.
     PairNodalShare<TDim, TNumNodes> mNodalShare;
 
+    /// ∂RHS/∂n of the slave nodes' normals (MatrixSize × d n_s) of the last tangent evaluation; empty when not recorded.
+    Matrix mForcePerNormal;
+
     void CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const ProcessInfo& rCurrentProcessInfo);
+    /// The second AD pass of a tangent evaluation whose nodal normals follow the iterate: the same integration and
+    /// residual with the normals seeded (coordinates and multipliers constant) into mForcePerNormal.
+    void RecordForcePerNormal(const NodeCoordinates<double, TDim, TNumNodes>& x1,
+                              const SpatialVector<double, TDim>& slave_normal,
+                              const NodeCoordinates<double, TDim, TNumNodesMaster>& x2,
+                              const NodeCoordinates<double, TDim, TNumNodes>& normals, const MultiplierVector& lambda,
+                              const MortarIntegrator<TDim, TNumNodes, TNumNodesMaster, Dual<NumCoordinateDofs>>& integrator,
+                              const ProcessInfo& rCurrentProcessInfo);
     /// The InternalError raised by the methods only the families implement.
     InternalError NotInBase(const char* method) const;
 };

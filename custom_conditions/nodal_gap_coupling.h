@@ -9,6 +9,9 @@
 /// T_j = Σ_d a^d_j s^d_j / A_j (A_j = NODAL_AREA = Σ_d a^d_j differentiated too), which adds
 ///   ∂RHS^c/∂q_d = B^c_j ∂T_j/∂q_d,   B^c_j = ∂RHS^c/∂T_j (n_dof × d),   ∂T_j/∂q_d = (∂(a^d_j s^d_j) − T_j ∂a^d_j)/∂q_d / A_j.
 /// The pair's own local tangent holds the d = c blocks; NodalPenaltyCoupling (custom_strategies/) adds the others.
+/// When the nodal normals follow the iterate (nodal_normal_coupling.h) g̃^d_j and s^d_j also move with the normals n_m of
+/// pair d's slave nodes m, so the pair records ∂X_j/∂n_m and ∂T_j/∂n_m too, and NodalNormalCoupling adds
+/// b^c_j (∂X_j/∂n_m)ᵀ ∂n_m/∂x + B^c_j ∂T_j/∂n_m ∂n_m/∂x for d ≠ c.
 #include <array>
 
 #include <Eigen/Core>
@@ -25,6 +28,9 @@ struct NodalGapCouplingTerms {
     bool slipping = false;  ///< whether the two slip terms below are set
     Matrix force_per_slip;  ///< B = ∂RHS/∂T_j (n_dof × d)
     Matrix slip_gradient;   ///< ∂T_j/∂q in this pair's unknowns (d × n_dof): (∂(a_j s_j) − T ∂a_j)/∂q / A_j
+    /// Normals that follow the iterate: ∂X_j/∂n_m over the pair's slave nodes m (d n_s; empty when the normals are held)
+    Vector gap_normal_gradient;
+    Matrix slip_normal_gradient;  ///< and ∂T_j/∂n_m (d × d n_s) at a slipping node
 };
 
 /// A pair condition whose residual reads the nodal penalty gap X = η G of its slave nodes (and the transmitted slip T).
@@ -47,10 +53,24 @@ struct NodalGapCouplingRecord {
     std::array<bool, TNumNodes> slipping{};  ///< set with coupled, for a slipping node of the frictional family
     std::array<Eigen::Matrix<double, TMatrixSize, TDim>, TNumNodes> force_per_slip{};
     std::array<Eigen::Matrix<double, TDim, TMatrixSize>, TNumNodes> slip_gradient{};
+    bool normals_recorded = false;  ///< the normal gradients below belong to this evaluation
+    std::array<Eigen::Matrix<double, TDim * TNumNodes, 1>, TNumNodes> gap_normal_gradient{};
+    std::array<Eigen::Matrix<double, TDim, TDim * TNumNodes>, TNumNodes> slip_normal_gradient{};
 
     void Clear() {
         coupled.fill(false);
         slipping.fill(false);
+        normals_recorded = false;
+    }
+    /// After the AD pass that seeds the nodal normals in the first d n_s derivative slots (the main pass follows and
+    /// overwrites the gradients in the unknowns).
+    void KeepNormalGradients() {
+        normals_recorded = true;
+        for (int j = 0; j < TNumNodes; ++j) {
+            if (!coupled[j]) continue;
+            gap_normal_gradient[j] = gap_gradient[j].template head<TDim * TNumNodes>();
+            if (slipping[j]) slip_normal_gradient[j] = slip_gradient[j].template leftCols<TDim * TNumNodes>();
+        }
     }
     bool Get(int j, NodalGapCouplingTerms& rTerms) const {
         if (!coupled[j]) return false;
@@ -60,6 +80,12 @@ struct NodalGapCouplingRecord {
         if (slipping[j]) {
             rTerms.force_per_slip = force_per_slip[j];
             rTerms.slip_gradient = slip_gradient[j];
+        }
+        rTerms.gap_normal_gradient.resize(0);
+        rTerms.slip_normal_gradient.resize(0, 0);
+        if (normals_recorded) {
+            rTerms.gap_normal_gradient = gap_normal_gradient[j];
+            if (slipping[j]) rTerms.slip_normal_gradient = slip_normal_gradient[j];
         }
         return true;
     }

@@ -31,6 +31,7 @@ public:
     }
 
 protected:
+    void AfterNormalPass() override { mCouplingRecord.KeepNormalGradients(); }
     using CouplingRecord = NodalGapCouplingRecord<TDim, TNumNodes, BaseType::MatrixSize>;
     /// Written by the family's (const) AD residual.
     CouplingRecord* MutableCouplingRecord() const { return &mCouplingRecord; }

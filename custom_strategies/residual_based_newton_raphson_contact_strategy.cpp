@@ -6,11 +6,24 @@
 #include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
 #include "custom_strategies/mortar_convergence_criteria.h"
+#include "custom_strategies/nodal_normal_coupling.h"
 #include "custom_strategies/nodal_penalty_coupling.h"
 #include "custom_utilities/contact_utilities.h"
 #include "custom_utilities/mortar_normals.h"
 
 namespace contact_app {
+namespace {
+
+template <class TContributor>
+void AddContributorOnce(BuilderAndSolver& rBuilder) {
+    const auto& contributors = rBuilder.AssemblyContributors();
+    if (std::none_of(contributors.begin(), contributors.end(), [](const auto& contributor) {
+            return dynamic_cast<const TContributor*>(contributor.get()) != nullptr;
+        }))
+        rBuilder.AddAssemblyContributor(std::make_shared<TContributor>());
+}
+
+}  // namespace
 
 ResidualBasedNewtonRaphsonContactStrategy::ResidualBasedNewtonRaphsonContactStrategy(
     ModelPart& rModelPart, Scheme::Pointer scheme, BuilderAndSolver::Pointer builder,
@@ -22,13 +35,10 @@ ResidualBasedNewtonRaphsonContactStrategy::ResidualBasedNewtonRaphsonContactStra
     CONTACT_CHECK(contact_settings.inner_loop_iterations >= 1, InputError,
                   "contact_settings.inner_loop_iterations must be at least 1, got ",
                   contact_settings.inner_loop_iterations);
-    // The penalty pairs of a slave node are coupled through its weighted gap (a builder shared by several strategies
-    // gets it once).
-    const auto& contributors = mBuilder->AssemblyContributors();
-    if (std::none_of(contributors.begin(), contributors.end(), [](const auto& contributor) {
-            return dynamic_cast<const NodalPenaltyCoupling*>(contributor.get()) != nullptr;
-        }))
-        mBuilder->AddAssemblyContributor(std::make_shared<NodalPenaltyCoupling>());
+    // The penalty pairs of a slave node are coupled through its weighted gap, and the pairs of nodal normals that follow
+    // the iterate through the faces around the node (a builder shared by several strategies gets each once).
+    AddContributorOnce<NodalPenaltyCoupling>(*mBuilder);
+    AddContributorOnce<NodalNormalCoupling>(*mBuilder);
 }
 
 void ResidualBasedNewtonRaphsonContactStrategy::Initialize() {

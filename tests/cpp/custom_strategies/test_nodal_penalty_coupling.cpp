@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "../custom_conditions/contact_condition_test_utilities.h"
+#include "assembled_tangent_test_utilities.h"
 #include "contact_app/solving/schemes/scheme.h"
 #include "custom_conditions/nodal_gap_coupling.h"
 #include "custom_strategies/nodal_penalty_coupling.h"
@@ -148,13 +149,6 @@ void BuildChain(CouplingModel& m, const std::string& family, bool slip, bool fir
     Finish(m, {1, 2, 3, 4}, n, slip, first_inactive ? 4 : 0);
 }
 
-/// Sets DOF @p i's displacement to @p value and moves the node with it (a moving mesh).
-void SetDisplacement(Dof* dof, double value) {
-    Node& node = dof->GetNode();
-    dof->GetSolutionStepValue() = value;
-    node.Coordinates() = node.InitialCoordinates() + node.FastGetSolutionStepValue(DISPLACEMENT);
-}
-
 /// The explicit pass (nodal sums) at the current state, as the strategy runs it before each build.
 /// With normal variation the nodal normals follow the slave face (one face: its own nodal normals), as the search
 /// and the criteria set them.
@@ -166,16 +160,7 @@ void ExplicitPass(CouplingModel& m) {
 
 Eigen::VectorXd Residual(CouplingModel& m) {
     ExplicitPass(m);
-    const ProcessInfo& info = m.info;
-    Eigen::VectorXd total = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m.dofs.size()));
-    EquationIdVectorType ids;
-    for (auto& pair : m.pairs) {
-        Vector rhs;
-        pair->CalculateRightHandSide(rhs, info);
-        pair->EquationIdVector(ids, info);
-        for (std::size_t a = 0; a < ids.size(); ++a) total[static_cast<Eigen::Index>(ids[a])] += rhs[a];
-    }
-    return total;
+    return AssembledResidual(m.pairs, m.dofs.size(), m.info);
 }
 
 enum class Coupling { None, GapOnly, Full };
@@ -185,17 +170,7 @@ enum class Coupling { None, GapOnly, Full };
 Eigen::MatrixXd Tangent(CouplingModel& m, Coupling coupling_kind) {
     ExplicitPass(m);
     const ProcessInfo& info = m.info;
-    const auto n = static_cast<Eigen::Index>(m.dofs.size());
-    Eigen::MatrixXd total = Eigen::MatrixXd::Zero(n, n);
-    EquationIdVectorType ids;
-    for (auto& pair : m.pairs) {
-        Matrix lhs;
-        Vector rhs;
-        pair->CalculateLocalSystem(lhs, rhs, info);
-        pair->EquationIdVector(ids, info);
-        for (std::size_t a = 0; a < ids.size(); ++a)
-            for (std::size_t b = 0; b < ids.size(); ++b) total(ids[a], ids[b]) += lhs(a, b);
-    }
+    Eigen::MatrixXd total = AssembledLocalTangents(m.pairs, m.dofs.size(), info);
     if (coupling_kind == Coupling::GapOnly) {
         std::vector<EquationIdVectorType> pair_ids(m.pairs.size());
         for (std::size_t c = 0; c < m.pairs.size(); ++c) m.pairs[c]->EquationIdVector(pair_ids[c], info);
@@ -222,11 +197,7 @@ Eigen::MatrixXd Tangent(CouplingModel& m, Coupling coupling_kind) {
     }
     if (coupling_kind == Coupling::Full) {
         NodalPenaltyCoupling coupling;
-        coupling.AddLHS(*m.model.part, info,
-                        [&](const EquationIdVectorType& rows, const EquationIdVectorType& cols, const Matrix* block) {
-                            for (std::size_t a = 0; a < rows.size(); ++a)
-                                for (std::size_t b = 0; b < cols.size(); ++b) total(rows[a], cols[b]) += (*block)(a, b);
-                        });
+        coupling.AddLHS(*m.model.part, info, DenseSink(total));
     }
     return total;
 }
@@ -238,21 +209,11 @@ struct TangentErrors {
 };
 
 TangentErrors MeasureTangent(CouplingModel& m) {
-    for (std::size_t i = 0; i < m.dofs.size(); ++i) SetDisplacement(m.dofs[i], 1e-3 * std::sin(1.0 + 3.7 * i));
+    for (std::size_t i = 0; i < m.dofs.size(); ++i) SetUnknown(m.dofs[i], 1e-3 * std::sin(1.0 + 3.7 * i));
     const Eigen::MatrixXd lhs = Tangent(m, Coupling::Full);
     const Eigen::MatrixXd gap_only = Tangent(m, Coupling::GapOnly);
     const Eigen::MatrixXd pairs_only = Tangent(m, Coupling::None);
-    const double h = 1e-7;
-    Eigen::MatrixXd fd(lhs.rows(), lhs.cols());
-    for (std::size_t i = 0; i < m.dofs.size(); ++i) {
-        const double u = m.dofs[i]->GetSolutionStepValue();
-        SetDisplacement(m.dofs[i], u + h);
-        const Eigen::VectorXd plus = Residual(m);
-        SetDisplacement(m.dofs[i], u - h);
-        const Eigen::VectorXd minus = Residual(m);
-        SetDisplacement(m.dofs[i], u);
-        fd.col(static_cast<Eigen::Index>(i)) = -(plus - minus) / (2.0 * h);
-    }
+    const Eigen::MatrixXd fd = CentralDifferenceLhs(m.dofs, [&] { return Residual(m); });
     const double scale = fd.cwiseAbs().maxCoeff();
     // Every active slave node penetrates.
     for (const auto& node : m.model.part->Nodes())
