@@ -36,7 +36,7 @@ void AddALMFrictionalResidual(const TState& s, double k, const FrictionalParamet
         Vec force = lambda * k + n * (eps * gap);
         lambda_row = n * (k * gap);
         if (p.slip[j]) {  // Coulomb slip, weighted by ω_j so that the pairs assemble the nodal law exactly
-            const T augmented_normal = k * lambda_n + eps * nodal.TransmittedGap(j, gap);
+            const T augmented_normal = k * lambda_n + eps * nodal.TransmittedGap(j, gap, PairArea<T>(s, j));
             const Vec trial = (p_lambda * k + nodal.Slip(j, pair_slip) * (p.slip_trial_factor[j] * eps))
                                   .cwiseProduct(p.free_components.row(j).transpose().template cast<T>());
             const Vec direction = SlipDirection<T, TDim, TNS>(trial, p, j, std::abs(Value(augmented_normal)) + 1e-300);
