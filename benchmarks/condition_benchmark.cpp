@@ -27,8 +27,10 @@ struct Rates {
 };
 
 /// One pair of kind TPair under the registered condition @p name, evaluated repeatedly.
+/// @p normal_variation: CONSIDER_NORMAL_VARIATION (3: the normals follow the iterate; the penalty pairs then also run
+/// the AD pass that records ∂RHS/∂n, docs/theory/mortar.md §7 "Normals that follow the iterate").
 template <class TPair>
-Rates Measure(const std::string& name, bool slip) {
+Rates Measure(const std::string& name, bool slip, int normal_variation) {
     constexpr int D = TPair::Dim, NS = TPair::NumSlave, NM = TPair::NumMaster;
     Model model;
     ModelPart& part = model.CreateModelPart("Contact");
@@ -73,6 +75,7 @@ Rates Measure(const std::string& name, bool slip) {
     ProcessInfo info;
     info.SetValue(SCALE_FACTOR, 1.0);
     info.SetValue(TANGENT_FACTOR, 0.1);
+    info.SetValue(CONSIDER_NORMAL_VARIATION, normal_variation);
     condition->Initialize(info);
     condition->InitializeSolutionStep(info);
     for (int l = 0; l < NM; ++l) {  // a sliding step: the master moved since the start of the step
@@ -104,12 +107,12 @@ Rates Measure(const std::string& name, bool slip) {
 }
 
 template <class TPair>
-void Row(const char* family, const char* suffix, double& ratio_out) {
+void Row(const char* family, const char* suffix, double& ratio_out, int normal_variation = 0) {
     const std::string name = std::string(family) + "MortarContactCondition" + suffix;
     const bool frictional = std::string(family).find("Frictional") != std::string::npos;
     for (const bool slip : {false, true}) {
         if (slip && !frictional) break;
-        const Rates r = Measure<TPair>(name, slip);
+        const Rates r = Measure<TPair>(name, slip, normal_variation);
         if (!slip) ratio_out = r.rhs / r.lhs_rhs;
         std::printf("%-26s %-7s %-5s %14.0f %14.0f %8.1f\n", family, suffix, frictional ? (slip ? "slip" : "stick") : "",
                     r.rhs, r.lhs_rhs, r.rhs / r.lhs_rhs);
@@ -136,5 +139,13 @@ int main() {
     }
     std::printf("ALMFrictional 3D4N: LHS+RHS costs %.1fx the RHS alone (%s 10x)\n", alm_frictional_3d4n,
                 alm_frictional_3d4n <= 10.0 ? "within" : "NOT within");
+    std::printf("\npenalty families, normals following the iterate (CONSIDER_NORMAL_VARIATION = 3, sets settled)\n");
+    for (const char* family : {"PenaltyFrictionless", "PenaltyFrictional"}) {
+        Row<MortarPairTraits<2, 2, 2>>(family, "2D2N", ratio, 3);
+        Row<MortarPairTraits<3, 3, 3>>(family, "3D3N", ratio, 3);
+        Row<MortarPairTraits<3, 4, 4>>(family, "3D4N", ratio, 3);
+        Row<MortarPairTraits<3, 3, 4>>(family, "3D3N4N", ratio, 3);
+        Row<MortarPairTraits<3, 4, 3>>(family, "3D4N3N", ratio, 3);
+    }
     return 0;
 }
