@@ -2391,7 +2391,7 @@ class LinearSolver:
         """
     def GetStatistics(self) -> dict:
         """
-        solver, ordering (used) and ordering_setting (asked for), factorizations, system_size, factor_nonzeros (nnz L + U) and factor_memory (bytes) of the last factorisation, and their maxima; factor_flops, symbolic_seconds and numeric_seconds (CPU) summed over the run, symbolic_analyses; static condensation: condensation ('' = not a condensing solver, 'yes' or 'no (why)'), interface_size and bulk_size of the last condensed solve, bulk_factorizations, condensed_solves, bulk_seconds and interface_seconds (wall); Krylov solvers: krylov (True), krylov_method, krylov_iterations (per solve of the run), last_relative_residual, tolerance, preconditioner_seconds, krylov_seconds (wall), ranks (MPI) and near_null_space (rigid-body modes given).
+        solver, ordering (used) and ordering_setting (asked for), factorizations, system_size, factor_nonzeros (nnz L + U) and factor_memory (bytes) of the last factorisation, and their maxima; factor_flops, symbolic_seconds and numeric_seconds (CPU) summed over the run, symbolic_analyses, workspace_enlargements (MUMPS factorisations redone with more working space); static condensation: condensation ('' = not a condensing solver, 'yes' or 'no (why)'), interface_size and bulk_size of the last condensed solve, bulk_factorizations, condensed_solves, bulk_seconds and interface_seconds (wall); Krylov solvers: krylov (True), krylov_method, krylov_iterations (per solve of the run), last_relative_residual, tolerance, preconditioner_seconds, krylov_seconds (wall), ranks (MPI) and near_null_space (rigid-body modes given).
         """
     def Info(self) -> str:
         """

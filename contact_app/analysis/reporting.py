@@ -115,6 +115,9 @@ def linear_solver_text(statistics: dict, *, largest: bool = True) -> str:
     count = int(statistics.get("factorizations", 0))
     if count:
         text += f", {count} factorisation{'s' if count != 1 else ''}"
+    enlargements = int(statistics.get("workspace_enlargements", 0))
+    if enlargements:  # MUMPS redid a factorisation with more working space (ICNTL(14))
+        text += f" ({enlargements} redone with more working space)"
     iterations = [int(n) for n in statistics.get("krylov_iterations", [])]
     if statistics.get("krylov") and iterations:
         text += (

@@ -43,6 +43,7 @@ LinearSolverStatistics AutoDirectSolver::Statistics() const {
     statistics.factor_flops = umfpack.factor_flops + mumps.factor_flops;
     statistics.symbolic_seconds = umfpack.symbolic_seconds + mumps.symbolic_seconds;
     statistics.numeric_seconds = umfpack.numeric_seconds + mumps.numeric_seconds;
+    statistics.workspace_enlargements = mumps.workspace_enlargements;
     return statistics;
 }
 

@@ -28,6 +28,7 @@ struct LinearSolverStatistics {
     double factor_flops = 0.0;       ///< floating-point operations of all numeric factorisations
     double symbolic_seconds = 0.0;   ///< CPU time of all symbolic analyses (ordering included)
     double numeric_seconds = 0.0;    ///< CPU time of all numeric factorisations
+    std::size_t workspace_enlargements = 0;  ///< MUMPS: factorisations redone with more working space (ICNTL(14))
     // Static condensation (StaticCondensationSolver; docs/theory/static_condensation.md):
     std::string condensation;          ///< "" = not a condensing solver; "yes", or "no (why)"
     std::size_t interface_size = 0;    ///< n_I of the last condensed solve

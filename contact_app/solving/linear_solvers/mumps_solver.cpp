@@ -147,7 +147,10 @@ struct MumpsSolver::Instance {
     }
 };
 
-MumpsSolver::MumpsSolver(FillReducingOrdering ordering) : mOrdering(ordering) {
+MumpsSolver::MumpsSolver(FillReducingOrdering ordering, int workspace_percent)
+    : mOrdering(ordering), mWorkspacePercent(workspace_percent) {
+    CONTACT_CHECK(workspace_percent >= 0, InputError, "mumps: the working space beyond the analysis's estimate must be ",
+                  "a percentage >= 0 (ICNTL(14)), got ", workspace_percent);
     mStatistics.solver = Info();
     mStatistics.ordering_setting = FillReducingOrderingName(ordering);
 }
@@ -194,15 +197,15 @@ void MumpsSolver::Factorise(SparseMatrixType& rA) {
     Instance& mumps = *mInstance;
     mumps.id.a = rA.valuePtr();
     const double start = CpuSeconds();
-    const MUMPS_INT relaxation = mumps.Icntl(14);
+    mumps.Icntl(14) = mWorkspacePercent;
     for (int retry = 0;; ++retry) {
         mumps.Run(kJobFactorise);
         const MUMPS_INT code = mumps.Infog(1);
         // -8/-9: pivoting needed more working space than the analysis estimated; enlarge it and redo.
         if ((code != -8 && code != -9) || retry == kWorkspaceRetries) break;
-        mumps.Icntl(14) *= 2;
+        mumps.Icntl(14) = std::max(2 * mumps.Icntl(14), mumps.Icntl(14) + 20);
+        ++mStatistics.workspace_enlargements;
     }
-    mumps.Icntl(14) = relaxation;
     mStatistics.numeric_seconds += CpuSeconds() - start;
     const MUMPS_INT code = mumps.Infog(1) >= 0 && mumps.Infog(28) > 0 ? kSingular : mumps.Infog(1);
     CONTACT_CHECK(code >= 0, ConvergenceError, "mumps: the factorisation of the ", rA.rows(), "x", rA.rows(),

@@ -20,7 +20,11 @@ namespace contact_app {
 /// (ICNTL(7) = 0). Why and when: docs/architecture.md, "Solving layer".
 class MumpsSolver : public LinearSolver {
 public:
-    explicit MumpsSolver(FillReducingOrdering ordering = FillReducingOrdering::Auto);
+    /// @param workspace_percent ICNTL(14): the working space the factorisation may take beyond the analysis's estimate,
+    ///        in per cent (MUMPS's default, 20). When pivoting needs more (MUMPS errors -8, -9) the factorisation is
+    ///        redone with it doubled (at least +20), at most twice; Statistics().workspace_enlargements counts them.
+    /// @throws InputError if @p workspace_percent is negative
+    explicit MumpsSolver(FillReducingOrdering ordering = FillReducingOrdering::Auto, int workspace_percent = 20);
     ~MumpsSolver() override;
     MumpsSolver(const MumpsSolver&) = delete;
     MumpsSolver& operator=(const MumpsSolver&) = delete;
@@ -39,6 +43,7 @@ private:
     void Factorise(SparseMatrixType& rA);
 
     FillReducingOrdering mOrdering;
+    int mWorkspacePercent;
     std::unique_ptr<Instance> mInstance;  // owned; created by the first Solve, freed by Clear
     SparsityPattern mPattern;             // of the last analysed matrix
     std::size_t mAnalyses = 0;

@@ -11,6 +11,7 @@ from analysis_cases import load
 
 import contact_app as ca
 from contact_app.analysis import IterationStatus, Reporter, StepRecord, StructuralMechanicsAnalysis
+from contact_app.analysis.reporting import linear_solver_text
 from contact_app.parameters import Parameters
 
 
@@ -198,3 +199,30 @@ def test_a_run_shows_one_live_line_per_newton_iteration(
         ca.Model(), Parameters(json.dumps(parameters)), reporter=Reporter(quiet, live_after=0.0)
     ).Run()
     assert "| Newton" not in quiet.getvalue() and "\r" not in quiet.getvalue()
+
+
+def _mumps(enlargements: int) -> dict:
+    return {
+        "solver": "mumps",
+        "ordering": "metis",
+        "ordering_setting": "auto",
+        "factorizations": 12,
+        "max_factor_nonzeros": 4.0e5,
+        "max_factor_memory": 8.0 * 2.0**20,
+        "workspace_enlargements": enlargements,
+    }
+
+
+def test_a_factorisation_redone_with_more_working_space_is_reported() -> None:
+    text = linear_solver_text(_mumps(3))
+    assert text == (
+        'linear solver: mumps, ordering metis ("auto"), 12 factorisations '
+        "(3 redone with more working space), largest factors 4e+05 nnz in 8.0 MB"
+    )
+
+
+def test_no_enlargement_says_nothing_about_working_space() -> None:
+    assert "working space" not in linear_solver_text(_mumps(0))
+    statistics = _mumps(0)
+    del statistics["workspace_enlargements"]  # a solver that does not count them
+    assert linear_solver_text(statistics) == linear_solver_text(_mumps(0))
