@@ -1,11 +1,11 @@
 """What the Hertz and Cattaneo-Mindlin examples share: meshing, width estimates, E*, settings.
 
-Mesh grading and gmsh groups, the contact width estimates, E*, loading a folder's script by path
-and the contact process settings, the command line and the writing of the outputs; for the Hertz
-runners also the run, the result's common fields (``HertzRun``: each runner adds its width b or
-a), the Newton record, the summary's frame and the pressure plot; for the Cattaneo-Mindlin runners
-the inputs with the friction coefficient, the timed recording analysis and the result's common
-fields (``CattaneoMindlinRun``).
+Mesh grading, gmsh groups, the mirror image of a mesh about x = 0 and the mesh scripts' command
+line, the contact width estimates, E*, loading a folder's script by path and the contact process
+settings, the mesh of a run, the summary's frame, the figures, the command line and the writing of
+the outputs; for the Hertz runners also the run, the result's common fields (``HertzRun``: each
+runner adds its width b or a), the Newton record and the pressure plot. What only the
+Cattaneo-Mindlin runners share is in ``cattaneo_mindlin_common``.
 
 Both examples measure an elliptic pressure profile p(c) = p0 sqrt(1 - c^2/w^2) (c = x in 2D, the
 radius r in 3D; w = b or a) two ways: a least-squares fit of p^2 against c^2, and the second
@@ -24,7 +24,7 @@ import math
 import os
 import sys
 import time
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -97,6 +97,59 @@ def gmsh_mesh(
         cell_data={"gmsh:physical": physical, "gmsh:geometrical": [p.copy() for p in physical]},
         field_data={name: np.array(value) for name, value in groups.items()},
     )
+
+
+class MirrorAboutX:
+    """A gmsh mesh and its mirror image about x = 0, the nodes on x = 0 merged.
+
+    Points: the mesh's, then the images of those off x = 0 (``points``); ``image[i]`` is the
+    image of node i (i itself on x = 0). The Cattaneo-Mindlin meshers mirror the Hertz half
+    (quarter) models so: the tangential load is antisymmetric about x = 0.
+    """
+
+    def __init__(self, mesh: meshio.Mesh, groups: dict[str, tuple[int, int]], length: float):
+        """Mirror ``mesh``, whose physical tags ``groups`` names; x = 0 within 1e-9 ``length``."""
+        names = {tag: name for name, (tag, _) in groups.items()}
+        self.blocks = {
+            names[int(tags[0])]: block.data
+            for block, tags in zip(mesh.cells, mesh.cell_data["gmsh:physical"], strict=True)
+        }
+        points = np.asarray(mesh.points, dtype=float)
+        self.on_plane = np.abs(points[:, 0]) < 1e-9 * length
+        off = ~self.on_plane
+        self.image = np.arange(len(points))
+        self.image[off] = len(points) + np.arange(np.count_nonzero(off))
+        self.points = np.vstack((points, points[off] * np.array([-1.0, 1.0, 1.0])))
+
+    def cells(self, name: str, order: Any = slice(None, None, -1)) -> np.ndarray:
+        """The cells of group ``name``, then their images with the nodes in ``order``.
+
+        Mirroring reverses a cell's orientation; the default, the reversed node order, restores
+        it for lines and quads (counter-clockwise again, or the same normal).
+        """
+        connectivity = self.blocks[name]
+        return np.vstack((connectivity, self.image[connectivity][:, order]))
+
+    def nodes(self, name: str) -> np.ndarray:
+        """The nodes of group ``name`` and their images, sorted."""
+        group = self.blocks[name].ravel()
+        return np.unique(np.concatenate((group, self.image[group])))
+
+
+def write_gmsh(path: Path, mesh: meshio.Mesh, binary: bool) -> meshio.Mesh:
+    """Write ``mesh`` to ``path`` (gmsh 2.2) and return it."""
+    meshio.write(str(path), mesh, file_format="gmsh22", binary=binary)
+    return mesh
+
+
+def mesh_arguments(doc: str, refinement_type: type, output: Path) -> argparse.Namespace:
+    """``--refinement`` (default 2) and ``--output`` (default ``output``) of a mesh script."""
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
+    parser.add_argument(
+        "--refinement", type=refinement_type, default=2, help="1 = coarsest (default 2)"
+    )
+    parser.add_argument("--output", type=Path, default=output)
+    return parser.parse_args()
 
 
 def fit_elliptic_profile(c: np.ndarray, p: np.ndarray, shape: str) -> tuple[float, float]:
@@ -191,134 +244,22 @@ def friction_coefficient(parameters: dict) -> float:
     return float(contact_parameters(parameters)["friction_coefficients"]["0"])
 
 
-def frictional_inputs(workdir: Path, example_dir: Path) -> tuple[dict, Path, Path, float]:
-    """(parameters tree, its file, materials file, mu) of an example run in ``workdir``.
+def mesh_level(
+    path: Path,
+    refinement: float | None,
+    default_refinement: float,
+    write_mesh: Callable[[Path, Any], object],
+) -> tuple[float | None, Any]:
+    """Write the mesh ``path`` at level ``refinement``: (the level, what ``write_mesh`` returned).
 
-    The inputs are the working folder's, else the example's own (``example_inputs``); the tree
-    names the materials file by its absolute path.
+    When ``refinement`` is None: at ``default_refinement`` if no mesh exists, else the existing
+    mesh is used: (None, None), the level unknown.
     """
-    parameters_path, materials = example_inputs(workdir, example_dir)
-    parameters = json.loads(parameters_path.read_text(encoding="utf-8"))
-    parameters["solver_settings"]["material_import_settings"]["materials_filename"] = str(materials)
-    return parameters, parameters_path, materials, friction_coefficient(parameters)
-
-
-def timed_analysis(
-    workdir: Path,
-    analysis_class: Callable[..., Any],
-    parameters: dict,
-    parameters_path: Path,
-    quiet: bool,
-    **options: Any,
-) -> tuple[Any, float]:
-    """(analysis, wall time) of ``analysis_class`` run on ``parameters`` in ``workdir``.
-
-    ``options`` go to the class (with the model, the parameters, their folder and the reporter).
-    """
-    import contact_app as ca
-    from contact_app.analysis.reporting import Reporter
-
-    with working_directory(workdir):
-        start = time.perf_counter()
-        analysis = analysis_class(
-            ca.Model(),
-            parameters,
-            base_dir=parameters_path.parent,
-            reporter=Reporter(quiet=quiet),
-            # The runner reports every step, NOT CONVERGED ones too (exit 1), so it goes on
-            # from them (the default stops at the first: docs/running.md "Non-convergence").
-            stop_on_non_convergence=False,
-            **options,
-        )
-        analysis.Run()
-        elapsed = time.perf_counter() - start
-    return analysis, elapsed
-
-
-@dataclass(kw_only=True)
-class CattaneoMindlinRun:
-    """What a Cattaneo-Mindlin run measured in both dimensions; each runner adds its own.
-
-    A runner's result defines ``c_over_a_analytic`` (its law of c/a in Q/(mu P)).
-    """
-
-    refinement: float | None
-    spacing: float  # slave node spacing at the contact centre
-    nodes: int
-    elements: int
-    mu: float
-    load: float  # the normal load on the whole body: P' (2D), P (3D)
-    tangential_load: float  # Q' (2D), Q (3D)
-    effective_modulus: float
-    a_analytic: float
-    p0_analytic: float
-    a: float  # moment estimate
-    c_deficit: float  # second moment of the deficit mu p - |q|
-    base_reaction_x: float
-    coulomb_slip_deviation: float  # max | |q| / (mu p) - 1 | over the slip nodes
-    stick_max_ratio: float  # max |q| / (mu p) over the stick nodes
-    max_slip_angle: float  # max angle between t and +WEIGHTED_SLIP over the slip nodes
-    steps: list[Any]
-    wall_time: float
-    profile: list[Any] = field(default_factory=list)
-
-    @property
-    def ratio(self) -> float:
-        """Q/(mu P) applied."""
-        return self.tangential_load / (self.mu * self.load)
-
-    @property
-    def c_over_a_analytic(self) -> float:
-        """Analytic c/a (defined by each runner's result)."""
-        raise NotImplementedError
-
-    @property
-    def c_analytic(self) -> float:
-        """Analytic stick half-width (2D) or radius (3D)."""
-        return self.c_over_a_analytic * self.a_analytic
-
-    @property
-    def c_deficit_error(self) -> float:
-        """Relative error of the deficit estimate of c."""
-        return relative_error(self.c_deficit, self.c_analytic)
-
-    @property
-    def a_error(self) -> float:
-        """Relative error of the contact half-width or radius (moment estimate)."""
-        return relative_error(self.a, self.a_analytic)
-
-    @property
-    def normal_phase_shear(self) -> float:
-        """Max shear traction after the last normal step (t = 1), where the theory has none."""
-        pressed = [step for step in self.steps if step.time <= 1.0 + 1e-9]
-        return pressed[-1].max_shear if pressed else math.nan
-
-    @property
-    def iterations(self) -> list[int]:
-        """Newton iterations per step."""
-        return [step.iterations for step in self.steps]
-
-    @property
-    def converged(self) -> bool:
-        """Every step converged."""
-        return bool(self.steps) and all(step.converged for step in self.steps)
-
-    @property
-    def active(self) -> list[Any]:
-        """The ACTIVE slave nodes."""
-        return [node for node in self.profile if node.active]
-
-    def analytic_traction(self, c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """(p, q) of Hertz and Cattaneo-Mindlin at ``c`` (x in 2D, the radius r in 3D)."""
-        a, stick_width, p0 = self.a_analytic, self.c_analytic, self.p0_analytic
-        p = p0 * np.sqrt(np.clip(1.0 - (c / a) ** 2, 0.0, None))
-        stick = (
-            self.mu
-            * p0
-            * (stick_width / a)
-            * np.sqrt(np.clip(1.0 - (c / stick_width) ** 2, 0.0, None))
-        )
-        return p, self.mu * p - stick
+    if refinement is None and not path.exists():
+        refinement = default_refinement
+    if refinement is None:
+        return None, None
+    return refinement, write_mesh(path, refinement)
 
 
 def run_example(
@@ -333,17 +274,12 @@ def run_example(
 ) -> Any:
     """Run an example in ``workdir`` and evaluate it; the result gets its refinement and time.
 
-    The mesh ``mesh`` is written there at level ``refinement``, or at ``default_refinement`` when
-    ``refinement`` is None and no mesh exists; otherwise the existing mesh is used. ``analyse``
+    The mesh ``mesh`` is written as ``mesh_level`` says, with ``default_refinement``. ``analyse``
     runs the analysis of a ProjectParameters.json in the working folder and returns it;
     ``evaluate(analysis, materials)`` makes the result.
     """
     workdir = Path(workdir).resolve()
-    path = workdir / mesh
-    if refinement is None and not path.exists():
-        refinement = default_refinement
-    if refinement is not None:
-        write_mesh(path, refinement)
+    refinement, _ = mesh_level(workdir / mesh, refinement, default_refinement, write_mesh)
     parameters, materials = example_inputs(workdir, example_dir)
     with working_directory(workdir):
         start = time.perf_counter()
@@ -398,14 +334,15 @@ def refinement_text(result: Any) -> str:
     return "" if result.refinement is None else f", refinement {result.refinement}"
 
 
-def hertz_summary(result: Any, lines: list[str]) -> str:
-    """The summary: ``lines``, then the Newton iterations and the wall time of ``result``."""
+def hertz_summary(result: Any, lines: list[str], steps: Iterable[str] = ()) -> str:
+    """The summary: ``lines``, the Newton iterations, ``steps`` (a line each), the wall time."""
     status = "all steps converged" if result.converged else "NOT CONVERGED"
     return "\n".join(
         [
             *lines,
             f"  Newton iterations: {sum(result.iterations)} "
             f"(per step {', '.join(map(str, result.iterations))}), {status}",
+            *steps,
             f"  wall time: {result.wall_time:.2f} s",
         ]
     )
@@ -420,6 +357,44 @@ def plot_elliptic_profile(axis: Any, p0: float, width: float, style: str, label:
     """Draw p0 sqrt(1 - c^2/w^2) over [0, w] (w = ``width``) on ``axis``."""
     curve = np.linspace(0.0, width, 400)
     axis.plot(curve, elliptic_profile(p0, width, curve), style, label=label)
+
+
+def new_figure(size: tuple[float, float]) -> tuple[Any, Any]:
+    """(figure, axes) of a new plot of ``size`` inches, drawn off screen."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt.subplots(figsize=size)
+
+
+def save_figure(
+    fig: Any,
+    path: Path,
+    labels: tuple[str, str, str],
+    xlim: tuple[float, float],
+    ylim: tuple[float, float | None],
+    **legend: Any,
+) -> None:
+    """Label (x, y, title), limit (None: automatic), grid and legend the axes; save; close.
+
+    ``legend`` goes to the legend.
+    """
+    import matplotlib.pyplot as plt
+
+    axis = fig.axes[0]
+    xlabel, ylabel, title = labels
+    axis.set_xlabel(xlabel)
+    axis.set_ylabel(ylabel)
+    axis.set_title(title)
+    axis.set_xlim(*xlim)
+    axis.set_ylim(*ylim)
+    axis.grid(True, alpha=0.3)
+    axis.legend(**legend)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
 
 
 def plot_pressure(
@@ -437,14 +412,9 @@ def plot_pressure(
     ``draw_estimates(axis)`` (the measured profiles), then the active and inactive nodes of
     ``result.profile``; ``legend`` goes to the legend.
     """
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
     c_max = 2.0 * width
     shown = [(c, p, a) for c, p, a in result.profile if c <= c_max]
-    fig, axis = plt.subplots(figsize=(7.0, 4.5))
+    fig, axis = new_figure((7.0, 4.5))
     plot_elliptic_profile(axis, result.p0_analytic, width, "k-", "Hertz (analytic)")
     draw_estimates(axis)
     axis.plot([c for c, _, a in shown if a], [p for _, p, a in shown if a], "C1o", label="active")
@@ -454,16 +424,8 @@ def plot_pressure(
         "C2x",
         label="inactive",
     )
-    axis.set_xlabel(xlabel)
-    axis.set_ylabel("contact pressure (MPa)")
-    axis.set_title(title)
-    axis.set_xlim(0.0, c_max)
-    axis.set_ylim(bottom=0.0)
-    axis.grid(True, alpha=0.3)
-    axis.legend(**legend)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    labels = (xlabel, "contact pressure (MPa)", title)
+    save_figure(fig, path, labels, (0.0, c_max), (0.0, None), **legend)
 
 
 def write_outputs(

@@ -42,6 +42,7 @@ import math
 import sys
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -50,6 +51,7 @@ from contact_app.analysis import StructuralMechanicsAnalysis
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
+import cattaneo_mindlin_common as partial_slip  # noqa: E402  (examples/cattaneo_mindlin_common.py)
 import hertz_common as common  # noqa: E402  (examples/hertz_common.py)
 
 make_mesh = common.mesh_script(HERE)
@@ -58,11 +60,16 @@ MESH = "cattaneo_mindlin_2d.msh"
 PLOT = "cattaneo_mindlin_2d_traction.png"
 SUMMARY = "cattaneo_mindlin_2d_summary.txt"
 DEFAULT_REFINEMENT = 2
+EXAMPLE = partial_slip.MeshedExample(HERE, MESH, DEFAULT_REFINEMENT, make_mesh.write_mesh)
 DEFAULT_RATIO = 0.5  # Q'/(mu P'): c/a = sqrt(0.5) = 0.707
 LINE_PRESSURE = 6.25  # N/mm^2 on the top of length 2R: P' = 125 N/mm, as hertz_2d
 TOP_LENGTH = 2.0 * make_mesh.RADIUS
-RAMP = "min(max(t - 1.0, 0.0), 1.0)"  # Q' from t = 1 to t = 2
 OPTIONS = {"ratio": ("Q'/(mu P')", DEFAULT_RATIO)}  # of the command line
+
+
+def c_over_a(ratio: float) -> float:
+    """Cattaneo's stick zone: c/a = sqrt(1 - Q'/(mu P'))."""
+    return math.sqrt(1.0 - ratio)
 
 
 def load_values(ratio: float, mu: float) -> list[str | float]:
@@ -73,8 +80,8 @@ def load_values(ratio: float, mu: float) -> list[str | float]:
     shear = tangential / TOP_LENGTH
     couple = tangential / make_mesh.RADIUS
     return [
-        f"{shear:.12g}*{RAMP}",
-        f"-{LINE_PRESSURE:.12g}*min(t, 1.0) + {couple:.12g}*x/abs(x)*{RAMP}",
+        f"{shear:.12g}*{partial_slip.RAMP}",
+        f"-{LINE_PRESSURE:.12g}*min(t, 1.0) + {couple:.12g}*x/abs(x)*{partial_slip.RAMP}",
         0.0,
     ]
 
@@ -93,27 +100,32 @@ class SlaveNode:
     slide: float  # u_x of the node minus u_x of the foundation's surface at the same x
 
     @property
+    def shear(self) -> float:
+        """|t|."""
+        return abs(self.q)
+
+    @property
     def stick(self) -> bool:
         """ACTIVE and not SLIP."""
         return self.active and not self.slip
 
 
-@dataclass
-class StepState:
-    """Newton iterations and the stick zone after one step."""
+@dataclass(kw_only=True)
+class StepState(partial_slip.Step):
+    """Newton iterations and the stick zone after one step (ratio: Q'/(mu P'))."""
 
-    time: float
-    iterations: int
-    converged: bool
-    ratio: float  # Q'/(mu P') applied in the step
-    active: int
-    slipping: int
     stick_half_width: float  # midpoint estimate, nan when no node slips
-    max_shear: float  # max |q| over the active nodes
+
+    def stick_text(self, a: float) -> str:
+        """The midpoint c/a against the theory's."""
+        analytic = c_over_a(self.ratio)
+        if math.isnan(self.stick_half_width):
+            return f", c/a analytic {analytic:.3f}"
+        return f", c/a {self.stick_half_width / a:.3f} (analytic {analytic:.3f})"
 
 
 @dataclass(kw_only=True)
-class CattaneoMindlinResult(common.CattaneoMindlinRun):
+class CattaneoMindlinResult(partial_slip.CattaneoMindlinRun):
     """What one run measured, next to the analytic values."""
 
     applied_moment: float  # of the top loads about the contact point (0 up to round-off)
@@ -127,17 +139,12 @@ class CattaneoMindlinResult(common.CattaneoMindlinRun):
     @property
     def c_over_a_analytic(self) -> float:
         """sqrt(1 - Q'/(mu P'))."""
-        return math.sqrt(1.0 - self.ratio)
+        return c_over_a(self.ratio)
 
     @property
     def c(self) -> float:
         """Stick half-width, midpoint estimate."""
         return 0.5 * (self.c_right - self.c_left)
-
-    @property
-    def c_error(self) -> float:
-        """Relative error of c (and of c/a: the same a_analytic divides both)."""
-        return abs(self.c - self.c_analytic) / self.c_analytic
 
     @property
     def stick_offset(self) -> float:
@@ -147,12 +154,12 @@ class CattaneoMindlinResult(common.CattaneoMindlinRun):
     @property
     def p0_error(self) -> float:
         """Relative error of the peak pressure."""
-        return abs(self.p0 - self.p0_analytic) / self.p0_analytic
+        return common.relative_error(self.p0, self.p0_analytic)
 
     @property
-    def tangential_force_error(self) -> float:
-        """Relative difference between sum(q L) and Q'."""
-        return abs(self.contact_tangential_force - self.tangential_load) / self.tangential_load
+    def contact_friction(self) -> float:
+        """sum(q L)."""
+        return self.contact_tangential_force
 
 
 def stick_half_width(nodes: list[SlaveNode]) -> tuple[float, float]:
@@ -205,33 +212,15 @@ def slave_profile(main: ca.ModelPart) -> list[SlaveNode]:
     return sorted(profile, key=lambda node: node.x)
 
 
-class _RecordingAnalysis(StructuralMechanicsAnalysis):
+class _RecordingAnalysis(partial_slip.Recording, StructuralMechanicsAnalysis):
     """The analysis, recording the stick zone after every step."""
 
-    def __init__(self, *args, full_ratio: float, **kwargs) -> None:
-        super().__init__(*args, **kwargs)
-        self.full_ratio = full_ratio
-        self.states: list[StepState] = []
+    slave_profile = staticmethod(slave_profile)
 
-    def FinalizeSolutionStep(self) -> None:  # noqa: N802 - Kratos name
-        super().FinalizeSolutionStep()
-        record = self.reporter.steps[-1]
-        profile = slave_profile(self.model.GetModelPart("Structure"))
-        right, left = stick_half_width(profile)
-        if not any(node.active and node.slip for node in profile):
-            right = left = math.nan
-        self.states.append(
-            StepState(
-                time=record.time,
-                iterations=record.iterations,
-                converged=record.converged,
-                ratio=self.full_ratio * min(max(record.time - 1.0, 0.0), 1.0),
-                active=sum(node.active for node in profile),
-                slipping=sum(node.active and node.slip for node in profile),
-                stick_half_width=0.5 * (right - left),
-                max_shear=max((abs(node.q) for node in profile if node.active), default=0.0),
-            )
-        )
+    def step_state(self, fields: dict[str, Any], profile: list[SlaveNode]) -> StepState:
+        """The step with the midpoint stick half-width (nan when no node slips)."""
+        right, left = stick_half_width(profile) if fields["slipping"] else (math.nan, math.nan)
+        return StepState(**fields, stick_half_width=0.5 * (right - left))
 
 
 def _applied_loads(main: ca.ModelPart) -> tuple[float, float, float]:
@@ -249,8 +238,9 @@ def _applied_loads(main: ca.ModelPart) -> tuple[float, float, float]:
     return -fy, fx, moment
 
 
-def evaluate(analysis: _RecordingAnalysis, materials: Path, mu: float) -> CattaneoMindlinResult:
+def evaluate(analysis: _RecordingAnalysis, materials: Path) -> CattaneoMindlinResult:
     """Measure a, p0, c and the forces on a finished analysis."""
+    mu = analysis.mu
     main = analysis.model.GetModelPart("Structure")
     load, tangential, moment = _applied_loads(main)
     modulus = common.effective_modulus(materials)
@@ -264,8 +254,7 @@ def evaluate(analysis: _RecordingAnalysis, materials: Path, mu: float) -> Cattan
     if len(active) >= 2:
         a = common.second_moment_width(x, p * length, 4.0)
         _, p0 = common.fit_elliptic_profile(x, p, "semi-ellipse")
-        deficit = np.clip(mu * p - np.abs(q), 0.0, None) * length
-        c_deficit = common.second_moment_width(x, deficit, 4.0) if deficit.sum() > 0.0 else math.nan
+        c_deficit = partial_slip.deficit_width(x, p, np.abs(q), length, mu, 4.0)
     else:
         a = p0 = c_deficit = math.nan
     right, left = stick_half_width(profile)
@@ -277,11 +266,8 @@ def evaluate(analysis: _RecordingAnalysis, materials: Path, mu: float) -> Cattan
     xs = np.array([node.x for node in profile])
     centre = int(np.argmin(np.abs(xs)))
     return CattaneoMindlinResult(
-        refinement=None,
+        **partial_slip.analysis_fields(analysis),
         spacing=float(xs[centre + 1] - xs[centre]),
-        nodes=main.NumberOfNodes(),
-        elements=main.NumberOfElements(),
-        mu=mu,
         load=load,
         tangential_load=tangential,
         applied_moment=moment,
@@ -302,8 +288,6 @@ def evaluate(analysis: _RecordingAnalysis, materials: Path, mu: float) -> Cattan
         stick_max_ratio=max((abs(n.q) / (mu * n.p) for n in sticking), default=0.0),
         max_slip_angle=max((n.slip_angle for n in slipping), default=0.0),
         stick_contiguous=all(not node.slip for node in inside),
-        steps=analysis.states,
-        wall_time=0.0,
         profile=profile,
     )
 
@@ -316,49 +300,25 @@ def run(
 ) -> CattaneoMindlinResult:
     """Run the example in ``workdir`` with Q'/(mu P') = ``ratio``.
 
-    The mesh is written there at level ``refinement``, or at DEFAULT_REFINEMENT when
-    ``refinement`` is None and no mesh exists; otherwise the existing mesh is used. The loads of
-    the parameters file are replaced by ``load_values(ratio, mu)``.
+    The mesh is written and chosen as ``hertz_common.mesh_level`` says (default level
+    DEFAULT_REFINEMENT). The loads of the parameters file are replaced by
+    ``load_values(ratio, mu)``.
     """
-    workdir = Path(workdir).resolve()
-    mesh = workdir / MESH
-    if refinement is None and not mesh.exists():
-        refinement = DEFAULT_REFINEMENT
-    if refinement is not None:
-        make_mesh.write_mesh(mesh, refinement)
-    parameters, parameters_path, materials, mu = common.frictional_inputs(workdir, HERE)
-    load_process = parameters["processes"]["loads_process_list"][0]["Parameters"]
-    load_process["value"] = load_values(ratio, mu)
-    analysis, elapsed = common.timed_analysis(
-        workdir, _RecordingAnalysis, parameters, parameters_path, quiet, full_ratio=ratio
+
+    def loads(_mesh: object, ratio: float, mu: float) -> list[str | float]:
+        return load_values(ratio, mu)
+
+    return partial_slip.run(
+        workdir, refinement, ratio, quiet, EXAMPLE, _RecordingAnalysis, loads, evaluate
     )
-    result = evaluate(analysis, materials, mu)
-    result.refinement = refinement  # None: an existing mesh of unknown level was reused
-    result.wall_time = elapsed
-    return result
-
-
-def _step_line(step: StepState, a: float) -> str:
-    """One step: iterations, and in the tangential steps the stick zone against the theory."""
-    text = f"    t = {step.time:g}: {step.iterations} iterations, {step.active} active"
-    if step.time > 1.0 + 1e-9:
-        text += f", {step.slipping} slip"
-        analytic = math.sqrt(1.0 - step.ratio)
-        if math.isnan(step.stick_half_width):
-            text += f", c/a analytic {analytic:.3f}"
-        else:
-            text += f", c/a {step.stick_half_width / a:.3f} (analytic {analytic:.3f})"
-    return text + ("" if step.converged else ", NOT CONVERGED")
 
 
 def summary(result: CattaneoMindlinResult) -> str:
     """The text summary of a run."""
     r = result
-    status = "all steps converged" if r.converged else "NOT CONVERGED"
-    level = "" if r.refinement is None else f", refinement {r.refinement}"
+    level = common.refinement_text(r)
     stick = [n.x for n in r.active if not n.slip]
     slips = sum(n.slip for n in r.active)
-    mu_p0 = r.mu * r.p0_analytic
     lines = [
         "cattaneo_mindlin_2d: Cattaneo-Mindlin partial slip, cylinder on an elastic foundation,",
         f"  plane strain, ALM frictional mortar, mu = {r.mu:g} (units: mm, N, MPa)",
@@ -385,18 +345,12 @@ def summary(result: CattaneoMindlinResult) -> str:
         f"base reaction {r.base_reaction_x:.7g}",
         f"  normal force: sum(p L) = {r.contact_normal_force:.7g} vs P' = {r.load:.7g} "
         f"({r.contact_normal_force / r.load - 1.0:+.2e})",
-        f"  Coulomb: slip nodes max | |q|/(mu p) - 1 | = {r.coulomb_slip_deviation:.2e}, stick "
-        f"nodes max |q|/(mu p) = {r.stick_max_ratio:.4f}",
+        r.coulomb_line("q"),
         f"  slip nodes: max angle between t and +WEIGHTED_SLIP {r.max_slip_angle:.2e} deg",
-        f"  shear left by the normal steps (t = 1; none in the theory): max |q| = "
-        f"{r.normal_phase_shear:.4g} = {100 * r.normal_phase_shear / mu_p0:.1f} % of mu p0",
+        r.normal_phase_line("q"),
         f"  active slave nodes: {len(r.active)}",
-        f"  Newton iterations: {sum(r.iterations)} (per step {', '.join(map(str, r.iterations))}),"
-        f" {status}",
-        *(_step_line(step, r.a_analytic) for step in r.steps),
-        f"  wall time: {r.wall_time:.2f} s",
     ]
-    return "\n".join(lines)
+    return common.hertz_summary(r, lines, (step.line(r.a_analytic) for step in r.steps))
 
 
 def write_outputs(result: CattaneoMindlinResult, workdir: Path) -> str:
@@ -406,50 +360,31 @@ def write_outputs(result: CattaneoMindlinResult, workdir: Path) -> str:
 
 def plot(result: CattaneoMindlinResult, path: Path) -> None:
     """Normal and shear traction of the slave nodes vs Hertz and Cattaneo-Mindlin."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
     r = result
+
+    def stick_zone(axis: Any) -> None:
+        for sign in (-1.0, 1.0):
+            axis.axvline(sign * r.c_analytic, color="C0", linestyle="--", linewidth=0.8)
+        axis.axvline(r.c_right, color="C2", linestyle=":", linewidth=1.0)
+        axis.axvline(
+            r.c_left, color="C2", linestyle=":", linewidth=1.0, label="c measured (midpoint)"
+        )
+
     x_max = 1.5 * r.a_analytic
-    curve = np.linspace(-r.a_analytic, r.a_analytic, 801)
-    p, q = r.analytic_traction(curve)
-    fig, axis = plt.subplots(figsize=(8.0, 5.0))
-    axis.plot(curve, p, "k-", label="Hertz p (analytic)")
-    axis.plot(curve, r.mu * p, "k:", label="μ p (analytic)")
-    axis.plot(curve, q, "C0-", label="Cattaneo–Mindlin q (analytic)")
-    shown = [n for n in r.profile if abs(n.x) <= x_max]
-    active = [n for n in shown if n.active]
-    axis.plot([n.x for n in active], [n.p for n in active], "ko", mfc="none", label="p, active")
-    stick = [n for n in active if not n.slip]
-    slip = [n for n in active if n.slip]
-    axis.plot([n.x for n in stick], [n.q for n in stick], "C2s", label="q, stick nodes")
-    axis.plot([n.x for n in slip], [n.q for n in slip], "C3^", label="q, slip nodes")
-    axis.plot(
-        [n.x for n in shown if not n.active],
-        [0.0 for n in shown if not n.active],
-        "x",
-        color="grey",
-        label="inactive",
-    )
-    for sign in (-1.0, 1.0):
-        axis.axvline(sign * r.c_analytic, color="C0", linestyle="--", linewidth=0.8)
-    axis.axvline(r.c_right, color="C2", linestyle=":", linewidth=1.0)
-    axis.axvline(r.c_left, color="C2", linestyle=":", linewidth=1.0, label="c measured (midpoint)")
-    axis.set_xlabel("x, distance from the contact centre (mm)")
-    axis.set_ylabel("traction (MPa)")
-    axis.set_title(
+    partial_slip.plot_tractions(
+        path,
+        r,
+        lambda node: node.x,
+        np.linspace(-r.a_analytic, r.a_analytic, 801),
+        (-x_max, x_max),
+        ("Cattaneo–Mindlin q", "q"),
+        stick_zone,
+        "x, distance from the contact centre (mm)",
         f"Cattaneo–Mindlin, Q'/(μP') = {r.ratio:.3g}: c/a = {r.c / r.a_analytic:.3f} "
-        f"(analytic {r.c_over_a_analytic:.3f}, error {100 * r.c_error:.1f} %)"
+        f"(analytic {r.c_over_a_analytic:.3f}, error {100 * r.c_error:.1f} %)",
+        loc="upper center",
+        ncol=3,
     )
-    axis.set_xlim(-x_max, x_max)
-    axis.set_ylim(0.0, 1.3 * r.p0_analytic)
-    axis.grid(True, alpha=0.3)
-    axis.legend(fontsize=8, loc="upper center", ncol=3)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -15,79 +15,45 @@ points). hertz_3d's ``symmetry_x`` group is dropped: the loading is not symmetri
 
 from __future__ import annotations
 
-import argparse
 import sys
 from pathlib import Path
 
 import meshio
 import numpy as np
 
-HERTZ_3D = Path(__file__).resolve().parent.parent / "hertz_3d"
+EXAMPLES = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(EXAMPLES))
+import hertz_common as common  # noqa: E402  (examples/hertz_common.py)
 
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
-from hertz_common import load_script  # noqa: E402  (examples/hertz_common.py)
-
-hertz_mesh = load_script("hertz_3d_make_mesh", HERTZ_3D / "make_mesh.py")
+hertz_mesh = common.mesh_script(EXAMPLES / "hertz_3d")
 RADIUS = hertz_mesh.RADIUS
 FINE_LENGTH = hertz_mesh.FINE_LENGTH
 
-#: Physical group name -> (tag, dimension).
-GROUPS = {
-    "sphere": (1, 3),
-    "foundation": (2, 3),
-    "load_top": (3, 2),
-    "contact_slave": (4, 0),
-    "contact_master": (5, 0),
-    "symmetry_y": (7, 0),
-    "fixed_base": (8, 0),
-    "sphere_centre_plane": (9, 0),
-}
-
-
-def _blocks_by_group(mesh: meshio.Mesh) -> dict[str, np.ndarray]:
-    """The connectivity of each physical group of a hertz_3d mesh, by group name."""
-    names = {tag: name for name, (tag, _) in hertz_mesh.GROUPS.items()}
-    return {
-        names[int(tags[0])]: block.data
-        for block, tags in zip(mesh.cells, mesh.cell_data["gmsh:physical"], strict=True)
-    }
+#: Physical group name -> (tag, dimension): hertz_3d's but its x = 0 plane, and the sphere's
+#: nodes on that plane.
+GROUPS = {name: group for name, group in hertz_mesh.GROUPS.items() if name != "symmetry_x"}
+GROUPS["sphere_centre_plane"] = (9, 0)
+#: Mirroring turns a positive hexahedron negative: swapping its two faces restores the sign (a
+#: mirrored quad is reversed, MirrorAboutX's default, to keep its normal +z).
+SWAPPED_FACES = [4, 5, 6, 7, 0, 1, 2, 3]
 
 
 def build(refinement: float) -> meshio.Mesh:
     """The hertz_3d mesh of level ``refinement``, mirrored about x = 0 (1 = coarsest)."""
-    quarter = hertz_mesh.build(refinement)
-    blocks = _blocks_by_group(quarter)
-    points = np.asarray(quarter.points, dtype=float)
-    on_plane = np.abs(points[:, 0]) < 1e-9 * RADIUS
-    mirror = np.arange(len(points))
-    mirror[~on_plane] = len(points) + np.arange(np.count_nonzero(~on_plane))
-    all_points = np.vstack((points, points[~on_plane] * np.array([-1.0, 1.0, 1.0])))
-
-    # Mirroring turns a positive hexahedron negative: swapping its two faces restores the sign;
-    # a mirrored quad is reversed to keep its normal +z.
-    def hexes(connectivity: np.ndarray) -> np.ndarray:
-        return np.vstack((connectivity, mirror[connectivity][:, [4, 5, 6, 7, 0, 1, 2, 3]]))
-
-    def quads(connectivity: np.ndarray) -> np.ndarray:
-        return np.vstack((connectivity, mirror[connectivity][:, ::-1]))
-
-    def nodes(name: str) -> np.ndarray:
-        group = blocks[name].ravel()
-        return np.unique(np.concatenate((group, mirror[group])))
-
+    mirror = common.MirrorAboutX(hertz_mesh.build(refinement), hertz_mesh.GROUPS, RADIUS)
     cells = [
-        ("hexahedron", hexes(blocks["sphere"])),
-        ("hexahedron", hexes(blocks["foundation"])),
-        ("quad", quads(blocks["load_top"])),
+        ("hexahedron", mirror.cells("sphere", SWAPPED_FACES)),
+        ("hexahedron", mirror.cells("foundation", SWAPPED_FACES)),
+        ("quad", mirror.cells("load_top")),
     ]
     node_groups = {
-        name: nodes(name)
+        name: mirror.nodes(name)
         for name in ("contact_slave", "contact_master", "symmetry_y", "fixed_base")
     }
-    sphere_nodes = np.unique(blocks["sphere"])
-    node_groups["sphere_centre_plane"] = sphere_nodes[on_plane[sphere_nodes]]
-    return hertz_mesh.gmsh_mesh(
-        all_points, cells, ["sphere", "foundation", "load_top"], node_groups, GROUPS
+    sphere_nodes = np.unique(mirror.blocks["sphere"])
+    node_groups["sphere_centre_plane"] = sphere_nodes[mirror.on_plane[sphere_nodes]]
+    return common.gmsh_mesh(
+        mirror.points, cells, ["sphere", "foundation", "load_top"], node_groups, GROUPS
     )
 
 
@@ -98,18 +64,12 @@ def contact_spacing(refinement: float) -> float:
 
 def write_mesh(path: Path, refinement: float) -> meshio.Mesh:
     """Build the mesh of level ``refinement`` and write it to ``path`` (gmsh 2.2, binary)."""
-    mesh = build(refinement)
-    meshio.write(str(path), mesh, file_format="gmsh22", binary=True)
-    return mesh
+    return common.write_gmsh(path, build(refinement), binary=True)
 
 
 if __name__ == "__main__":
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--refinement", type=float, default=2, help="1 = coarsest (default 2)")
-    parser.add_argument(
-        "--output", type=Path, default=Path(__file__).with_name("cattaneo_mindlin_3d.msh")
-    )
-    args = parser.parse_args()
+    output = Path(__file__).with_name("cattaneo_mindlin_3d.msh")
+    args = common.mesh_arguments(__doc__, float, output)
     written = write_mesh(args.output, args.refinement)
     hexahedra = hertz_mesh.hexahedra(written)
     worst_jacobian, worst_aspect = hertz_mesh.quality(written)

@@ -41,8 +41,10 @@ from __future__ import annotations
 
 import math
 import sys
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import meshio
 import numpy as np
@@ -52,6 +54,7 @@ from contact_app.analysis import StructuralMechanicsAnalysis
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
+import cattaneo_mindlin_common as partial_slip  # noqa: E402  (examples/cattaneo_mindlin_common.py)
 import hertz_common as common  # noqa: E402  (examples/hertz_common.py)
 
 make_mesh = common.mesh_script(HERE)
@@ -60,11 +63,16 @@ MESH = "cattaneo_mindlin_3d.msh"
 PLOT = "cattaneo_mindlin_3d_traction.png"
 SUMMARY = "cattaneo_mindlin_3d_summary.txt"
 DEFAULT_REFINEMENT = 2
+EXAMPLE = partial_slip.MeshedExample(HERE, MESH, DEFAULT_REFINEMENT, make_mesh.write_mesh)
 DEFAULT_RATIO = 0.5  # Q/(mu P): c/a = 0.5^(1/3) = 0.794
 PRESSURE = 10.0  # MPa on the flat top, as hertz_3d: P = 10 MPa x (meshed disc area) = 3129 N
-RAMP = "min(max(t - 1.0, 0.0), 1.0)"  # Q from t = 1 to t = 2
 OPTIONS = {"refinement_type": float, "ratio": ("Q/(mu P)", DEFAULT_RATIO)}  # of the command line
 GAUSS_2 = (-1.0 / math.sqrt(3.0), 1.0 / math.sqrt(3.0))
+
+
+def c_over_a(ratio: float) -> float:
+    """Mindlin's stick disc: c/a = (1 - Q/(mu P))^(1/3)."""
+    return (1.0 - ratio) ** (1.0 / 3.0)
 
 
 def quad_shape_integrals(corners: np.ndarray) -> np.ndarray:
@@ -102,9 +110,9 @@ def load_values(ratio: float, mu: float, area: float, moment: float) -> list[str
     shear = ratio * mu * PRESSURE
     couple = shear * area * make_mesh.RADIUS / moment
     return [
-        f"{shear:.15g}*{RAMP}",
+        f"{shear:.15g}*{partial_slip.RAMP}",
         0.0,
-        f"-{PRESSURE:.15g}*min(t, 1.0) + {couple:.15g}*x/abs(x)*{RAMP}",
+        f"-{PRESSURE:.15g}*min(t, 1.0) + {couple:.15g}*x/abs(x)*{partial_slip.RAMP}",
     ]
 
 
@@ -188,25 +196,30 @@ def stick_zone(nodes: list[SlaveNode]) -> StickZone:
     return StickZone(inner, outer, inner < outer)
 
 
-@dataclass
-class StepState:
-    """Newton iterations and the stick zone after one step."""
+@dataclass(kw_only=True)
+class StepState(partial_slip.Step):
+    """Newton iterations, the stick zone and the slip law after one step (ratio: Q/(mu P))."""
 
-    time: float
-    iterations: int
-    converged: bool
-    ratio: float  # Q/(mu P) applied in the step
-    active: int
-    slipping: int
     zone: StickZone
-    max_shear: float  # max |t| over the active nodes
     max_slip_angle: float  # over the slip nodes
     min_power: float  # min t . WEIGHTED_SLIP / (|t| |s|) over the slip nodes
     coulomb_deviation: float  # max | |t| / (mu p) - 1 | over the slip nodes
 
+    def stick_text(self, a: float) -> str:
+        """The theory's c/a, the stick set's radii and the slip nodes' worst angle."""
+        text = f", c/a analytic {c_over_a(self.ratio):.3f}"
+        if not math.isnan(self.zone.c):
+            text += (
+                f", stick set in r <= {self.zone.inner / a:.3f} a, slip from "
+                f"{self.zone.outer / a:.3f} a"
+            )
+        if self.slipping:
+            text += f", max angle(t, slip) {self.max_slip_angle:.1e} deg"
+        return text
+
 
 @dataclass(kw_only=True)
-class CattaneoMindlin3DResult(common.CattaneoMindlinRun):
+class CattaneoMindlin3DResult(partial_slip.CattaneoMindlinRun):
     """What one run measured, next to the analytic values (load: P on the whole ball)."""
 
     applied_moment: np.ndarray  # of the top loads about the contact point, half model
@@ -218,17 +231,17 @@ class CattaneoMindlin3DResult(common.CattaneoMindlinRun):
     @property
     def c_over_a_analytic(self) -> float:
         """(1 - Q/(mu P))^(1/3)."""
-        return (1.0 - self.ratio) ** (1.0 / 3.0)
+        return c_over_a(self.ratio)
 
     @property
-    def c_error(self) -> float:
-        """Relative error of c (and of c/a) from the stick set."""
-        return abs(self.zone.c - self.c_analytic) / self.c_analytic
+    def c(self) -> float:
+        """Stick radius from the stick set (midpoint)."""
+        return self.zone.c
 
     @property
-    def tangential_force_error(self) -> float:
-        """Relative difference between 2 sum(q A) and Q."""
-        return abs(self.friction_force[0] - self.tangential_load) / self.tangential_load
+    def contact_friction(self) -> float:
+        """2 sum(q A) = 2 sum(-t_x A)."""
+        return float(self.friction_force[0])
 
 
 def slave_profile(main: ca.ModelPart) -> list[SlaveNode]:
@@ -271,34 +284,20 @@ def _slip_checks(nodes: list[SlaveNode], mu: float) -> tuple[float, float, float
     return angle, cosine, coulomb
 
 
-class _RecordingAnalysis(StructuralMechanicsAnalysis):
+class _RecordingAnalysis(partial_slip.Recording, StructuralMechanicsAnalysis):
     """The analysis, recording the stick zone and the slip law after every step."""
 
-    def __init__(self, *args, full_ratio: float, mu: float, **kwargs) -> None:
-        super().__init__(*args, **kwargs)
-        self.full_ratio = full_ratio
-        self.mu = mu
-        self.states: list[StepState] = []
+    slave_profile = staticmethod(slave_profile)
 
-    def FinalizeSolutionStep(self) -> None:  # noqa: N802 - Kratos name
-        super().FinalizeSolutionStep()
-        record = self.reporter.steps[-1]
-        profile = slave_profile(self.model.GetModelPart("Structure"))
+    def step_state(self, fields: dict[str, Any], profile: list[SlaveNode]) -> StepState:
+        """The step with its stick zone and the slip law of its slip nodes."""
         angle, cosine, coulomb = _slip_checks(profile, self.mu)
-        self.states.append(
-            StepState(
-                time=record.time,
-                iterations=record.iterations,
-                converged=record.converged,
-                ratio=self.full_ratio * min(max(record.time - 1.0, 0.0), 1.0),
-                active=sum(node.active for node in profile),
-                slipping=sum(node.active and node.slip for node in profile),
-                zone=stick_zone(profile),
-                max_shear=max((node.shear for node in profile if node.active), default=0.0),
-                max_slip_angle=angle,
-                min_power=cosine,
-                coulomb_deviation=coulomb,
-            )
+        return StepState(
+            **fields,
+            zone=stick_zone(profile),
+            max_slip_angle=angle,
+            min_power=cosine,
+            coulomb_deviation=coulomb,
         )
 
 
@@ -315,8 +314,9 @@ def _applied_loads(main: ca.ModelPart) -> tuple[np.ndarray, np.ndarray]:
     return force, moment
 
 
-def evaluate(analysis: _RecordingAnalysis, materials: Path, mu: float) -> CattaneoMindlin3DResult:
+def evaluate(analysis: _RecordingAnalysis, materials: Path) -> CattaneoMindlin3DResult:
     """Measure a, c, the slip law and the forces on a finished analysis."""
+    mu = analysis.mu
     main = analysis.model.GetModelPart("Structure")
     force, moment = _applied_loads(main)
     load, tangential = -2.0 * force[2], 2.0 * force[0]
@@ -329,19 +329,15 @@ def evaluate(analysis: _RecordingAnalysis, materials: Path, mu: float) -> Cattan
     area = np.array([node.area for node in active])
     shear = np.array([node.shear for node in active])
     a = common.second_moment_width(r, p * area, 2.5)
-    deficit = np.clip(mu * p - shear, 0.0, None) * area
-    c_deficit = common.second_moment_width(r, deficit, 2.5) if deficit.sum() > 0.0 else math.nan
+    c_deficit = partial_slip.deficit_width(r, p, shear, area, mu, 2.5)
     traction = np.array([node.traction for node in active])
     angle, cosine, coulomb = _slip_checks(profile, mu)
     sticking = [node for node in active if not node.slip]
     base = main.GetSubModelPart("DISPLACEMENT_fixed_base")
     radii = sorted({round(node.r, 12) for node in profile})
     return CattaneoMindlin3DResult(
-        refinement=None,
+        **partial_slip.analysis_fields(analysis),
         spacing=radii[1],
-        nodes=main.NumberOfNodes(),
-        elements=main.NumberOfElements(),
-        mu=mu,
         load=load,
         tangential_load=tangential,
         applied_moment=moment,
@@ -358,10 +354,15 @@ def evaluate(analysis: _RecordingAnalysis, materials: Path, mu: float) -> Cattan
         stick_max_ratio=max((node.shear / (mu * node.p) for node in sticking), default=0.0),
         max_slip_angle=angle,
         min_power=cosine,
-        steps=analysis.states,
-        wall_time=0.0,
         profile=profile,
     )
+
+
+def _top_loads(mesh: Callable[[], meshio.Mesh], ratio: float, mu: float) -> list[str | float]:
+    """``load_values`` for the top of the run's mesh, ``mesh()``."""
+    meshed = mesh()
+    top = np.vstack([block.data for block in meshed.cells if block.type == "quad"])
+    return load_values(ratio, mu, *top_integrals(meshed.points, top))
 
 
 def run(
@@ -372,54 +373,20 @@ def run(
 ) -> CattaneoMindlin3DResult:
     """Run the example in ``workdir`` with Q/(mu P) = ``ratio``.
 
-    The mesh is written there at level ``refinement``, or at DEFAULT_REFINEMENT when
-    ``refinement`` is None and no mesh exists; otherwise the existing mesh is used. The loads of
-    the parameters file are replaced by ``load_values`` for this ratio and mesh.
+    The mesh is written and chosen as ``hertz_common.mesh_level`` says (default level
+    DEFAULT_REFINEMENT). The loads of the parameters file are replaced by ``load_values`` for
+    this ratio and mesh.
     """
-    workdir = Path(workdir).resolve()
-    mesh_path = workdir / MESH
-    if refinement is None and not mesh_path.exists():
-        refinement = DEFAULT_REFINEMENT
-    if refinement is not None:
-        mesh = make_mesh.write_mesh(mesh_path, refinement)
-    else:
-        mesh = meshio.read(str(mesh_path))
-    top = np.vstack([block.data for block in mesh.cells if block.type == "quad"])
-    parameters, parameters_path, materials, mu = common.frictional_inputs(workdir, HERE)
-    load_process = parameters["processes"]["loads_process_list"][0]["Parameters"]
-    load_process["value"] = load_values(ratio, mu, *top_integrals(mesh.points, top))
-    analysis, elapsed = common.timed_analysis(
-        workdir, _RecordingAnalysis, parameters, parameters_path, quiet, full_ratio=ratio, mu=mu
+    return partial_slip.run(
+        workdir, refinement, ratio, quiet, EXAMPLE, _RecordingAnalysis, _top_loads, evaluate
     )
-    result = evaluate(analysis, materials, mu)
-    result.refinement = refinement  # None: an existing mesh of unknown level was reused
-    result.wall_time = elapsed
-    return result
-
-
-def _step_line(step: StepState, a: float) -> str:
-    """One step: iterations and, in the tangential steps, the stick zone and the slip law."""
-    text = f"    t = {step.time:g}: {step.iterations} iterations, {step.active} active"
-    if step.time > 1.0 + 1e-9:
-        analytic = (1.0 - step.ratio) ** (1.0 / 3.0)
-        text += f", {step.slipping} slip, c/a analytic {analytic:.3f}"
-        if not math.isnan(step.zone.c):
-            text += (
-                f", stick set in r <= {step.zone.inner / a:.3f} a, slip from "
-                f"{step.zone.outer / a:.3f} a"
-            )
-        if step.slipping:
-            text += f", max angle(t, slip) {step.max_slip_angle:.1e} deg"
-    return text + ("" if step.converged else ", NOT CONVERGED")
 
 
 def summary(result: CattaneoMindlin3DResult) -> str:
     """The text summary of a run."""
     r = result
-    status = "all steps converged" if r.converged else "NOT CONVERGED"
     level = "" if r.refinement is None else f", refinement {r.refinement:g}"
     slips = sum(n.slip for n in r.active)
-    mu_p0 = r.mu * r.p0_analytic
     p0 = 3.0 * r.load / (2.0 * math.pi * r.a**2)
     lines = [
         "cattaneo_mindlin_3d: Mindlin partial slip, sphere on an elastic block, half model y >= 0,",
@@ -449,60 +416,37 @@ def summary(result: CattaneoMindlin3DResult) -> str:
         f"base reaction 2 R_x = {r.base_reaction_x:.6g}",
         f"  normal force 2 sum(p A) = {r.normal_force:.6g} vs P = {r.load:.6g} "
         f"({r.normal_force / r.load - 1.0:+.2e}; reference-configuration areas)",
-        f"  Coulomb: slip nodes max | |t|/(mu p) - 1 | = {r.coulomb_slip_deviation:.2e}, stick "
-        f"nodes max |t|/(mu p) = {r.stick_max_ratio:.4f}",
+        r.coulomb_line("t"),
         f"  slip nodes: max angle between t and WEIGHTED_SLIP {r.max_slip_angle:.2e} deg, "
         f"min cos {r.min_power:.9f} (dissipative: > 0)",
-        f"  shear left by the normal steps (t = 1; none in the theory): max |t| = "
-        f"{r.normal_phase_shear:.4g} = {100 * r.normal_phase_shear / mu_p0:.1f} % of mu p0",
+        r.normal_phase_line("t"),
         f"  active slave nodes: {len(r.active)}, of which {slips} slip",
-        f"  Newton iterations: {sum(r.iterations)} (per step {', '.join(map(str, r.iterations))}),"
-        f" {status}",
-        *(_step_line(step, r.a_analytic) for step in r.steps),
-        f"  wall time: {r.wall_time:.2f} s",
     ]
-    return "\n".join(lines)
+    return common.hertz_summary(r, lines, (step.line(r.a_analytic) for step in r.steps))
 
 
 def plot(result: CattaneoMindlin3DResult, path: Path) -> None:
     """Normal and shear traction of the slave nodes against radius, with Hertz and Mindlin."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
     r = result
-    r_max = 1.6 * r.a_analytic
-    curve = np.linspace(0.0, r.a_analytic, 400)
-    p, q = r.analytic_traction(curve)
-    fig, axis = plt.subplots(figsize=(8.0, 5.0))
-    axis.plot(curve, p, "k-", label="Hertz p (analytic)")
-    axis.plot(curve, r.mu * p, "k:", label="μ p (analytic)")
-    axis.plot(curve, q, "C0-", label="Mindlin q (analytic)")
-    shown = [n for n in r.profile if n.r <= r_max]
-    active = [n for n in shown if n.active]
-    axis.plot([n.r for n in active], [n.p for n in active], "ko", mfc="none", label="p, active")
-    stick = [n for n in active if not n.slip]
-    slip = [n for n in active if n.slip]
-    axis.plot([n.r for n in stick], [n.q for n in stick], "C2s", label="q = −t_x, stick nodes")
-    axis.plot([n.r for n in slip], [n.q for n in slip], "C3^", label="q = −t_x, slip nodes")
-    inactive = [n for n in shown if not n.active]
-    axis.plot([n.r for n in inactive], [0.0] * len(inactive), "x", color="grey", label="inactive")
-    axis.axvline(r.c_analytic, color="C0", linestyle="--", linewidth=0.8, label="c analytic")
-    axis.axvspan(r.zone.inner, r.zone.outer, color="C2", alpha=0.15, label="c measured (range)")
-    axis.set_xlabel("r, distance from the contact axis (mm)")
-    axis.set_ylabel("traction (MPa)")
-    axis.set_title(
+
+    def stick_zone(axis: Any) -> None:
+        axis.axvline(r.c_analytic, color="C0", linestyle="--", linewidth=0.8, label="c analytic")
+        axis.axvspan(r.zone.inner, r.zone.outer, color="C2", alpha=0.15, label="c measured (range)")
+
+    partial_slip.plot_tractions(
+        path,
+        r,
+        lambda node: node.r,
+        np.linspace(0.0, r.a_analytic, 400),
+        (0.0, 1.6 * r.a_analytic),
+        ("Mindlin q", "q = −t_x"),
+        stick_zone,
+        "r, distance from the contact axis (mm)",
         f"Mindlin 3D, Q/(μP) = {r.ratio:.3g}: c/a = {r.zone.c / r.a_analytic:.3f} "
-        f"(analytic {r.c_over_a_analytic:.3f}, error {100 * r.c_error:.1f} %)"
+        f"(analytic {r.c_over_a_analytic:.3f}, error {100 * r.c_error:.1f} %)",
+        loc="upper right",
+        ncol=2,
     )
-    axis.set_xlim(0.0, r_max)
-    axis.set_ylim(0.0, 1.3 * r.p0_analytic)
-    axis.grid(True, alpha=0.3)
-    axis.legend(fontsize=8, loc="upper right", ncol=2)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
 
 
 def write_outputs(result: CattaneoMindlin3DResult, workdir: Path) -> str:
