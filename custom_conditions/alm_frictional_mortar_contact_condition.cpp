@@ -63,31 +63,6 @@ Condition::Pointer ALMF_CLASS::Create(IndexType new_id, Geometry::Pointer slave,
 }
 
 ALMF_TEMPLATE
-void ALMF_CLASS::Initialize(const ProcessInfo& rCurrentProcessInfo) {
-    BaseType::Initialize(rCurrentProcessInfo);
-    mPreviousMortarOperators.Reset();
-}
-
-ALMF_TEMPLATE
-void ALMF_CLASS::InitializeSolutionStep(const ProcessInfo& rCurrentProcessInfo) {
-    BaseType::InitializeSolutionStep(rCurrentProcessInfo);
-    ComputePreviousOperatorsOnce<TDim, TNS, TNM>(*this, rCurrentProcessInfo, mPreviousMortarOperators);
-}
-
-ALMF_TEMPLATE
-void ALMF_CLASS::FinalizeSolutionStep(const ProcessInfo& rCurrentProcessInfo) {
-    BaseType::FinalizeSolutionStep(rCurrentProcessInfo);
-    mPreviousMortarOperators.initialized = false;
-}
-
-ALMF_TEMPLATE
-void ALMF_CLASS::EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const {
-    DofsVectorType dofs;
-    GetDofList(dofs, rCurrentProcessInfo);
-    EquationIdsOf(dofs, rResult);
-}
-
-ALMF_TEMPLATE
 void ALMF_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&) const {
     const Geometry& slave = this->GetParentGeometry();
     rElementalDofList.clear();
@@ -97,45 +72,8 @@ void ALMF_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo
 }
 
 ALMF_TEMPLATE
-int ALMF_CLASS::GetActiveInactiveValue() const {
-    return FrictionalStateValue<TNS>(this->GetParentGeometry());
-}
-
-ALMF_TEMPLATE
-void ALMF_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) {
-    AddFrictionalExplicitContribution<TDim, TNS, TNM>(*this, rCurrentProcessInfo, mPreviousMortarOperators);
-}
-
-ALMF_TEMPLATE
-int ALMF_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
-    BaseType::Check(rCurrentProcessInfo);
-    const Geometry& slave = this->GetParentGeometry();
-    CheckVectorMultiplier<TDim, TNS>(slave, this->Id(), "ALMContactFrictional");
-    CheckFrictionalVariables<TDim, TNS>(slave, this->Id());
-    return 0;
-}
-
-ALMF_TEMPLATE
-void ALMF_CLASS::Save(Serializer& rSerializer) const {
-    BaseType::Save(rSerializer);
-    mPreviousMortarOperators.Save(rSerializer);
-}
-
-ALMF_TEMPLATE
-void ALMF_CLASS::Load(Serializer& rSerializer) {
-    BaseType::Load(rSerializer);
-    mPreviousMortarOperators.Load(rSerializer);
-}
-
-ALMF_TEMPLATE
 typename ALMF_CLASS::BaseType::MultiplierVector ALMF_CLASS::MultiplierValues() const {
     return VectorMultiplierValues<TDim, TNS, typename BaseType::MultiplierVector>(this->GetParentGeometry());
-}
-
-ALMF_TEMPLATE
-void ALMF_CLASS::InitializeResidual(const MortarOperators<double, TNS, TNM>& operators,
-                                    const ProcessInfo& rCurrentProcessInfo) {
-    this->Set(MODIFIED, !IsObjective(operators, mPreviousMortarOperators, rCurrentProcessInfo));
 }
 
 ALMF_TEMPLATE
@@ -150,7 +88,7 @@ void ALMF_CLASS::AddFrictionalResidual(const State<T>& state, const ProcessInfo&
     // Every node divides by ε (inactive and slip rows) and uses κ (inactive rows, stick penalty, slip trial traction).
     const auto p = ReadFrictionalParameters<TDim, TNS>(
         slave, rCurrentProcessInfo, this->Id(), "ALM", [](bool) { return true; }, [](bool, bool) { return true; });
-    const auto slip = MakeSlipData<TDim, TNS, TNM>(*this, mPreviousMortarOperators, AnyActive(p));
+    const auto slip = this->SlipOfStep(AnyActive(p));
     AddALMFrictionalResidual<T, TDim, TNS, TNM>(
         state, k, p, slip, MakeNodalInterfaceMap<TDim, TNS>(slave, this->NodalShare(), true), rhs);
 }

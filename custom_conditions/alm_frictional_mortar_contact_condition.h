@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
-#include "custom_conditions/frictional_mortar_contact_common.h"
-#include "custom_conditions/mortar_contact_condition.h"
+#include "custom_conditions/mortar_contact_family_condition.h"
 
 namespace contact_app {
 
@@ -17,10 +16,11 @@ namespace contact_app {
 /// slip uses the true step increment x − (X0 + d(1)) (reference bug B1 fixed); buffer size 2 suffices.
 template <int TDim, int TNumNodes, bool TNormalVariation, int TNumNodesMaster = TNumNodes>
 class AugmentedLagrangianMethodFrictionalMortarContactCondition
-    : public MortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONAL, TNormalVariation, TNumNodesMaster> {
+    : public MortarContactFamilyCondition<TDim, TNumNodes, FrictionalCase::FRICTIONAL, TNormalVariation,
+                                          TNumNodesMaster> {
 public:
     using BaseType =
-        MortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONAL, TNormalVariation, TNumNodesMaster>;
+        MortarContactFamilyCondition<TDim, TNumNodes, FrictionalCase::FRICTIONAL, TNormalVariation, TNumNodesMaster>;
     using typename BaseType::ADScalar;
     template <class T>
     using State = typename BaseType::template State<T>;
@@ -31,30 +31,12 @@ public:
 
     Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
                               Geometry::Pointer master) const override;
-    /// Base reset plus the previous operators (zero, not initialized).
-    void Initialize(const ProcessInfo& rCurrentProcessInfo) override;
-    /// Computes the start-of-step operators once per step (X0 + d(1)).
-    void InitializeSolutionStep(const ProcessInfo& rCurrentProcessInfo) override;
-    /// Lets the next step recompute the previous operators.
-    void FinalizeSolutionStep(const ProcessInfo& rCurrentProcessInfo) override;
-    /// @param[out] rResult [master DISPLACEMENT_*, slave DISPLACEMENT_*, slave VECTOR_LAGRANGE_MULTIPLIER_*]
-    /// @param[in] rCurrentProcessInfo handed on to GetDofList (not read)
-    void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
+    /// @param[out] rElementalDofList [master DISPLACEMENT_*, slave DISPLACEMENT_*, slave VECTOR_LAGRANGE_MULTIPLIER_*]
+    /// @param[in] rCurrentProcessInfo not read
     void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
-    /// Σ_i s_i 3^i, s_i = 0 inactive, 1 active-slip, 2 active-stick.
-    int GetActiveInactiveValue() const override;
-    /// Adds g̃ to WEIGHTED_GAP and the weighted slip (objective iff not MODIFIED) to WEIGHTED_SLIP (historical).
-    void AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) override;
-    /// Base checks plus VECTOR_LAGRANGE_MULTIPLIER (historical and DoFs), WEIGHTED_SLIP (historical), buffer ≥ 2.
-    int Check(const ProcessInfo& rCurrentProcessInfo) const override;
-    /// Paired-condition state plus the previous operators and their flags (restart with a consistent slip).
-    void Save(Serializer& rSerializer) const override;
-    void Load(Serializer& rSerializer) override;
 
 protected:
     typename BaseType::MultiplierVector MultiplierValues() const override;
-    void InitializeResidual(const MortarOperators<double, TNumNodes, TNumNodesMaster>& operators,
-                            const ProcessInfo& rCurrentProcessInfo) override;
     void AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
                      LocalVector<double>& rhs) const override;
     void AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
@@ -64,8 +46,6 @@ private:
     template <class T>
     void AddFrictionalResidual(const State<T>& state, const ProcessInfo& rCurrentProcessInfo,
                                LocalVector<T>& rhs) const;
-
-    frictional_detail::PreviousMortarOperators<TNumNodes, TNumNodesMaster> mPreviousMortarOperators;
 };
 
 /// Axisymmetric variant (2D2N only): every Gauss weight (current and start-of-step operators, explicit gap and

@@ -49,29 +49,12 @@ Condition::Pointer ALMC_CLASS::Create(IndexType new_id, Geometry::Pointer slave,
 }
 
 ALMC_TEMPLATE
-void ALMC_CLASS::EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const {
-    DofsVectorType dofs;
-    GetDofList(dofs, rCurrentProcessInfo);
-    EquationIdsOf(dofs, rResult);
-}
-
-ALMC_TEMPLATE
 void ALMC_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&) const {
     const Geometry& slave = this->GetParentGeometry();
     rElementalDofList.clear();
     rElementalDofList.reserve(BaseType::MatrixSize);
     AppendDisplacementDofs<TDim, TNS, TNM>(slave, this->GetPairedGeometry(), rElementalDofList);
     AppendVectorMultiplierDofs<TDim, TNS>(slave, rElementalDofList);
-}
-
-ALMC_TEMPLATE
-int ALMC_CLASS::GetActiveInactiveValue() const {
-    return ActiveNodesValue<TNS>(this->GetParentGeometry());
-}
-
-ALMC_TEMPLATE
-void ALMC_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) {
-    AddFrictionlessExplicitContribution<TDim, TNS, TNM>(*this, rCurrentProcessInfo);
 }
 
 ALMC_TEMPLATE

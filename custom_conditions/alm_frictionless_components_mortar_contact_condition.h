@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
-#include "custom_conditions/mortar_contact_condition.h"
+#include "custom_conditions/mortar_contact_family_condition.h"
 
 namespace contact_app {
 
@@ -15,11 +15,11 @@ namespace contact_app {
 /// 3D4N3N} (no axisymmetric variant); local system [master u, slave u, slave λ (d per node)] of size d(2n_s + n_m).
 template <int TDim, int TNumNodes, bool TNormalVariation, int TNumNodesMaster = TNumNodes>
 class AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition
-    : public MortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONLESS_COMPONENTS, TNormalVariation,
-                                    TNumNodesMaster> {
+    : public MortarContactFamilyCondition<TDim, TNumNodes, FrictionalCase::FRICTIONLESS_COMPONENTS, TNormalVariation,
+                                          TNumNodesMaster> {
 public:
-    using BaseType = MortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONLESS_COMPONENTS, TNormalVariation,
-                                            TNumNodesMaster>;
+    using BaseType = MortarContactFamilyCondition<TDim, TNumNodes, FrictionalCase::FRICTIONLESS_COMPONENTS,
+                                                  TNormalVariation, TNumNodesMaster>;
     using typename BaseType::ADScalar;
     template <class T>
     using State = typename BaseType::template State<T>;
@@ -30,15 +30,10 @@ public:
 
     Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
                               Geometry::Pointer master) const override;
-    /// @param[out] rResult [master DISPLACEMENT_*, slave DISPLACEMENT_*, slave VECTOR_LAGRANGE_MULTIPLIER_*]
-    /// @param[in] rCurrentProcessInfo handed on to GetDofList (not read)
+    /// @param[out] rElementalDofList [master DISPLACEMENT_*, slave DISPLACEMENT_*, slave VECTOR_LAGRANGE_MULTIPLIER_*]
+    /// @param[in] rCurrentProcessInfo not read
     /// @throws InputError if a DoF is missing
-    void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
     void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
-    /// Σ_i 2^i over the slave nodes that are ACTIVE.
-    int GetActiveInactiveValue() const override;
-    /// Adds the pair's weighted gap g̃ to the historical WEIGHTED_GAP of the slave nodes (or flags ISOLATED).
-    void AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) override;
     /// Base checks plus VECTOR_LAGRANGE_MULTIPLIER (historical) and its d component DoFs on the slave nodes.
     int Check(const ProcessInfo& rCurrentProcessInfo) const override;
 

@@ -36,13 +36,6 @@ Condition::Pointer ALM_CLASS::Create(IndexType new_id, Geometry::Pointer slave, 
 }
 
 ALM_TEMPLATE
-void ALM_CLASS::EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const {
-    DofsVectorType dofs;
-    GetDofList(dofs, rCurrentProcessInfo);
-    EquationIdsOf(dofs, rResult);
-}
-
-ALM_TEMPLATE
 void ALM_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&) const {
     const Geometry& slave = this->GetParentGeometry();
     const Geometry& master = this->GetPairedGeometry();
@@ -50,16 +43,6 @@ void ALM_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&
     rElementalDofList.reserve(BaseType::MatrixSize);
     AppendDisplacementDofs<TDim, TNS, TNM>(slave, master, rElementalDofList);
     for (int j = 0; j < TNS; ++j) rElementalDofList.push_back(&slave[j].GetDof(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE));
-}
-
-ALM_TEMPLATE
-int ALM_CLASS::GetActiveInactiveValue() const {
-    return ActiveNodesValue<TNS>(this->GetParentGeometry());
-}
-
-ALM_TEMPLATE
-void ALM_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) {
-    AddFrictionlessExplicitContribution<TDim, TNS, TNM>(*this, rCurrentProcessInfo);
 }
 
 ALM_TEMPLATE

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
-#include "custom_conditions/mortar_contact_condition.h"
+#include "custom_conditions/mortar_contact_family_condition.h"
 
 namespace contact_app {
 
@@ -14,10 +14,11 @@ namespace contact_app {
 /// [master u, slave u, λ] of size d(n_s + n_m) + n_s.
 template <int TDim, int TNumNodes, bool TNormalVariation, int TNumNodesMaster = TNumNodes>
 class AugmentedLagrangianMethodFrictionlessMortarContactCondition
-    : public MortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONLESS, TNormalVariation, TNumNodesMaster> {
+    : public MortarContactFamilyCondition<TDim, TNumNodes, FrictionalCase::FRICTIONLESS, TNormalVariation,
+                                          TNumNodesMaster> {
 public:
     using BaseType =
-        MortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONLESS, TNormalVariation, TNumNodesMaster>;
+        MortarContactFamilyCondition<TDim, TNumNodes, FrictionalCase::FRICTIONLESS, TNormalVariation, TNumNodesMaster>;
     using typename BaseType::ADScalar;
     template <class T>
     using State = typename BaseType::template State<T>;
@@ -28,15 +29,11 @@ public:
 
     Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
                               Geometry::Pointer master) const override;
-    /// @param[out] rResult [master DISPLACEMENT_*, slave DISPLACEMENT_*, slave LAGRANGE_MULTIPLIER_CONTACT_PRESSURE]
-    /// @param[in] rCurrentProcessInfo handed on to GetDofList (not read)
+    /// @param[out] rElementalDofList [master DISPLACEMENT_*, slave DISPLACEMENT_*,
+    ///             slave LAGRANGE_MULTIPLIER_CONTACT_PRESSURE]
+    /// @param[in] rCurrentProcessInfo not read
     /// @throws InputError if a DoF is missing
-    void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
     void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
-    /// Σ_i 2^i over the slave nodes that are ACTIVE.
-    int GetActiveInactiveValue() const override;
-    /// Adds the pair's weighted gap g̃ to the historical WEIGHTED_GAP of the slave nodes (or flags ISOLATED).
-    void AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) override;
     /// Base checks plus LAGRANGE_MULTIPLIER_CONTACT_PRESSURE (historical and DoF) on the slave nodes.
     int Check(const ProcessInfo& rCurrentProcessInfo) const override;
 

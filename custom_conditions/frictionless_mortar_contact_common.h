@@ -164,12 +164,6 @@ std::pair<double, NodalParameters<TNumNodes>> ReadALMParameters(const Geometry& 
             ReadNodalParameters<TNumNodes>(slave, id, "ALM", [](bool active) { return !active; })};
 }
 
-/// The equation ids of @p dofs, in order.
-inline void EquationIdsOf(const DofsVectorType& dofs, EquationIdVectorType& ids) {
-    ids.resize(dofs.size());
-    for (std::size_t i = 0; i < dofs.size(); ++i) ids[i] = dofs[i]->EquationId();
-}
-
 /// The pair integrated in its current configuration for an explicit pass, and the state the residuals see there.
 /// Every pass decides ISOLATED afresh from this configuration: a pair is reused from step to step while its slave
 /// face slides, so a pair that did not overlap its master when the search made it may overlap it later (a flag kept

@@ -122,8 +122,11 @@ InternalError MORTAR_CLASS::NotInBase(const char* method) const {
 }
 
 MORTAR_TEMPLATE
-void MORTAR_CLASS::EquationIdVector(EquationIdVectorType&, const ProcessInfo&) const {
-    throw NotInBase("EquationIdVector");
+void MORTAR_CLASS::EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const {
+    DofsVectorType dofs;
+    GetDofList(dofs, rCurrentProcessInfo);
+    rResult.resize(dofs.size());
+    for (std::size_t i = 0; i < dofs.size(); ++i) rResult[i] = dofs[i]->EquationId();
 }
 
 MORTAR_TEMPLATE
@@ -361,17 +364,7 @@ void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Pr
 #undef MORTAR_TEMPLATE
 #undef MORTAR_CLASS
 
-// -- Explicit instantiations: the registered pairs of the implemented families, with and without NV --
-#define CONTACT_APP_INSTANTIATE_MORTAR_(FAMILY, D, NS, NM)                           \
-    template class MortarContactCondition<D, NS, FrictionalCase::FAMILY, false, NM>; \
-    template class MortarContactCondition<D, NS, FrictionalCase::FAMILY, true, NM>;
-#define CONTACT_APP_INSTANTIATE_MORTAR(FAMILY) CONTACT_APP_FOR_EACH_MORTAR_PAIR(CONTACT_APP_INSTANTIATE_MORTAR_, FAMILY)
-CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONLESS)
-CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONLESS_COMPONENTS)
-CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONLESS_PENALTY)
-CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONAL)
-CONTACT_APP_INSTANTIATE_MORTAR(FRICTIONAL_PENALTY)
-#undef CONTACT_APP_INSTANTIATE_MORTAR
-#undef CONTACT_APP_INSTANTIATE_MORTAR_
+// -- Explicit instantiations: the registered pairs of the five families, with and without NV --
+CONTACT_APP_INSTANTIATE_FAMILY_BASE(MortarContactCondition)
 
 }  // namespace contact_app

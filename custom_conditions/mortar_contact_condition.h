@@ -90,7 +90,9 @@ public:
                                       const ProcessInfo& rCurrentProcessInfo) override;
     void CalculateOnIntegrationPoints(const Variable<Vector>& rVariable, std::vector<Vector>& rOutput,
                                       const ProcessInfo& rCurrentProcessInfo) override;
-    /// @throws InternalError (families implement it)
+    /// The equation ids of GetDofList, in its order.
+    /// @param[out] rResult MatrixSize ids
+    /// @param[in] rCurrentProcessInfo handed on to GetDofList
     void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
     /// @throws InternalError (families implement it)
     void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
@@ -166,5 +168,18 @@ private:
 #define CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(TAxisymClass) \
     template class TAxisymClass<2, false>;                  \
     template class TAxisymClass<2, true>;
+/// Explicit instantiations of a family base TBase<TDim, TNumNodes, FrictionalCase, TNormalVariation, TNumNodesMaster>
+/// (MortarContactCondition, MortarContactFamilyCondition) for the five contact families × every registered pair × NV.
+#define CONTACT_APP_INSTANTIATE_FAMILY_BASE_NV_(TBase, FAMILY, D, NS, NM) \
+    template class TBase<D, NS, FrictionalCase::FAMILY, false, NM>;      \
+    template class TBase<D, NS, FrictionalCase::FAMILY, true, NM>;
+#define CONTACT_APP_INSTANTIATE_FAMILY_BASE_(TBase, D, NS, NM)                            \
+    CONTACT_APP_INSTANTIATE_FAMILY_BASE_NV_(TBase, FRICTIONLESS, D, NS, NM)            \
+    CONTACT_APP_INSTANTIATE_FAMILY_BASE_NV_(TBase, FRICTIONLESS_COMPONENTS, D, NS, NM) \
+    CONTACT_APP_INSTANTIATE_FAMILY_BASE_NV_(TBase, FRICTIONLESS_PENALTY, D, NS, NM)    \
+    CONTACT_APP_INSTANTIATE_FAMILY_BASE_NV_(TBase, FRICTIONAL, D, NS, NM)              \
+    CONTACT_APP_INSTANTIATE_FAMILY_BASE_NV_(TBase, FRICTIONAL_PENALTY, D, NS, NM)
+#define CONTACT_APP_INSTANTIATE_FAMILY_BASE(TBase) \
+    CONTACT_APP_FOR_EACH_MORTAR_PAIR(CONTACT_APP_INSTANTIATE_FAMILY_BASE_, TBase)
 
 }  // namespace contact_app

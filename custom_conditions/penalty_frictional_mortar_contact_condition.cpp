@@ -88,70 +88,10 @@ Condition::Pointer PENF_CLASS::Create(IndexType new_id, Geometry::Pointer slave,
 }
 
 PENF_TEMPLATE
-void PENF_CLASS::Initialize(const ProcessInfo& rCurrentProcessInfo) {
-    BaseType::Initialize(rCurrentProcessInfo);
-    mPreviousMortarOperators.Reset();
-}
-
-PENF_TEMPLATE
-void PENF_CLASS::InitializeSolutionStep(const ProcessInfo& rCurrentProcessInfo) {
-    BaseType::InitializeSolutionStep(rCurrentProcessInfo);
-    ComputePreviousOperatorsOnce<TDim, TNS, TNM>(*this, rCurrentProcessInfo, mPreviousMortarOperators);
-}
-
-PENF_TEMPLATE
-void PENF_CLASS::FinalizeSolutionStep(const ProcessInfo& rCurrentProcessInfo) {
-    BaseType::FinalizeSolutionStep(rCurrentProcessInfo);
-    mPreviousMortarOperators.initialized = false;
-}
-
-PENF_TEMPLATE
-void PENF_CLASS::EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const {
-    DofsVectorType dofs;
-    GetDofList(dofs, rCurrentProcessInfo);
-    EquationIdsOf(dofs, rResult);
-}
-
-PENF_TEMPLATE
 void PENF_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&) const {
     rElementalDofList.clear();
     rElementalDofList.reserve(BaseType::MatrixSize);
     AppendDisplacementDofs<TDim, TNS, TNM>(this->GetParentGeometry(), this->GetPairedGeometry(), rElementalDofList);
-}
-
-PENF_TEMPLATE
-int PENF_CLASS::GetActiveInactiveValue() const {
-    return FrictionalStateValue<TNS>(this->GetParentGeometry());
-}
-
-PENF_TEMPLATE
-void PENF_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) {
-    AddFrictionalExplicitContribution<TDim, TNS, TNM>(*this, rCurrentProcessInfo, mPreviousMortarOperators);
-}
-
-PENF_TEMPLATE
-int PENF_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
-    BaseType::Check(rCurrentProcessInfo);
-    CheckFrictionalVariables<TDim, TNS>(this->GetParentGeometry(), this->Id());
-    return 0;
-}
-
-PENF_TEMPLATE
-void PENF_CLASS::Save(Serializer& rSerializer) const {
-    BaseType::Save(rSerializer);
-    mPreviousMortarOperators.Save(rSerializer);
-}
-
-PENF_TEMPLATE
-void PENF_CLASS::Load(Serializer& rSerializer) {
-    BaseType::Load(rSerializer);
-    mPreviousMortarOperators.Load(rSerializer);
-}
-
-PENF_TEMPLATE
-void PENF_CLASS::InitializeResidual(const MortarOperators<double, TNS, TNM>& operators,
-                                    const ProcessInfo& rCurrentProcessInfo) {
-    this->Set(MODIFIED, !IsObjective(operators, mPreviousMortarOperators, rCurrentProcessInfo));
 }
 
 PENF_TEMPLATE
@@ -163,7 +103,7 @@ void PENF_CLASS::AddFrictionalResidual(const State<T>& state, const ProcessInfo&
     const auto p = ReadFrictionalParameters<TDim, TNS>(
         slave, rCurrentProcessInfo, this->Id(), "Penalty", [](bool active) { return active; },
         [](bool active, bool) { return active; });
-    const auto slip = MakeSlipData<TDim, TNS, TNM>(*this, mPreviousMortarOperators, AnyActive(p));
+    const auto slip = this->SlipOfStep(AnyActive(p));
     AddPenaltyFrictionalResidual<T, TDim, TNS, TNM>(state, p, slip,
                                                     MakeNodalInterfaceMap<TDim, TNS>(slave, this->NodalShare(), true),
                                                     ElasticSlips<TDim, TNS>(slave), rhs, this->MutableCouplingRecord());

@@ -51,27 +51,10 @@ Condition::Pointer PENALTY_CLASS::Create(IndexType new_id, Geometry::Pointer sla
 }
 
 PENALTY_TEMPLATE
-void PENALTY_CLASS::EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const {
-    DofsVectorType dofs;
-    GetDofList(dofs, rCurrentProcessInfo);
-    EquationIdsOf(dofs, rResult);
-}
-
-PENALTY_TEMPLATE
 void PENALTY_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&) const {
     rElementalDofList.clear();
     rElementalDofList.reserve(BaseType::MatrixSize);
     AppendDisplacementDofs<TDim, TNS, TNM>(this->GetParentGeometry(), this->GetPairedGeometry(), rElementalDofList);
-}
-
-PENALTY_TEMPLATE
-int PENALTY_CLASS::GetActiveInactiveValue() const {
-    return ActiveNodesValue<TNS>(this->GetParentGeometry());
-}
-
-PENALTY_TEMPLATE
-void PENALTY_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) {
-    AddFrictionlessExplicitContribution<TDim, TNS, TNM>(*this, rCurrentProcessInfo);
 }
 
 PENALTY_TEMPLATE

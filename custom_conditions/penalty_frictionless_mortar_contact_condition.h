@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
-#include "custom_conditions/penalty_mortar_contact_condition.h"
+#include "custom_conditions/mortar_contact_family_condition.h"
 
 namespace contact_app {
 
@@ -17,11 +17,11 @@ namespace contact_app {
 /// {2D2N,3D3N,3D4N,3D3N4N,3D4N3N}; local system [master u, slave u] of size d(n_s + n_m).
 template <int TDim, int TNumNodes, bool TNormalVariation, int TNumNodesMaster = TNumNodes>
 class PenaltyMethodFrictionlessMortarContactCondition
-    : public PenaltyMortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONLESS_PENALTY, TNormalVariation,
-                                           TNumNodesMaster> {
+    : public MortarContactFamilyCondition<TDim, TNumNodes, FrictionalCase::FRICTIONLESS_PENALTY, TNormalVariation,
+                                          TNumNodesMaster> {
 public:
-    using BaseType = PenaltyMortarContactCondition<TDim, TNumNodes, FrictionalCase::FRICTIONLESS_PENALTY,
-                                                   TNormalVariation, TNumNodesMaster>;
+    using BaseType = MortarContactFamilyCondition<TDim, TNumNodes, FrictionalCase::FRICTIONLESS_PENALTY,
+                                                  TNormalVariation, TNumNodesMaster>;
     using typename BaseType::ADScalar;
     template <class T>
     using State = typename BaseType::template State<T>;
@@ -32,18 +32,10 @@ public:
 
     Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
                               Geometry::Pointer master) const override;
-    /// @param[out] rResult [master DISPLACEMENT_*, slave DISPLACEMENT_*]
-    /// @param[in] rCurrentProcessInfo handed on to GetDofList (not read)
+    /// @param[out] rElementalDofList [master DISPLACEMENT_*, slave DISPLACEMENT_*]
+    /// @param[in] rCurrentProcessInfo not read
     /// @throws InputError if a DoF is missing
-    void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
     void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
-    /// Σ_i 2^i over the slave nodes that are ACTIVE.
-    int GetActiveInactiveValue() const override;
-    /// Adds the pair's weighted gap g̃ to the historical WEIGHTED_GAP and D_jj (= ∫Φ_j N_j, dual basis only) to
-    /// the non-historical NODAL_AREA of the slave nodes (or flags ISOLATED). Unlike the reference, whose penalty
-    /// explicit contribution hard-codes the plane case, the axisymmetric variant weights both by 2π r / t, as its
-    /// implicit operators (docs/theory/contact_residuals.md §9).
-    void AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) override;
 
 protected:
     void AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,

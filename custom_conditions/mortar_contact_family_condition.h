@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <type_traits>
+#include <variant>
+
+#include "custom_conditions/frictional_mortar_contact_common.h"
+#include "custom_conditions/penalty_mortar_contact_condition.h"
+
+namespace contact_app {
+
+/// The base a contact family's intermediate builds on: PenaltyMortarContactCondition for the two penalty families,
+/// MortarContactCondition for the ALM ones.
+template <int TDim, int TNumNodes, FrictionalCase TFrictional, bool TNormalVariation, int TNumNodesMaster>
+using MortarContactFamilyBase =
+    std::conditional_t<TFrictional == FrictionalCase::FRICTIONLESS_PENALTY ||
+                           TFrictional == FrictionalCase::FRICTIONAL_PENALTY,
+                       PenaltyMortarContactCondition<TDim, TNumNodes, TFrictional, TNormalVariation, TNumNodesMaster>,
+                       MortarContactCondition<TDim, TNumNodes, TFrictional, TNormalVariation, TNumNodesMaster>>;
+
+/// What the five contact families share beyond their base, chosen by the friction policy TFrictional: the state
+/// encoding, the explicit pass and, for the two Coulomb families (FRICTIONAL, FRICTIONAL_PENALTY), the start-of-step
+/// ("previous") mortar operators D_old, M_old of X0 + d(1) with their life cycle and restart state, the objective /
+/// non-objective slip switch recorded in MODIFIED and the frictional checks (frictionless_mortar_contact_common.h,
+/// frictional_mortar_contact_common.h; docs/theory/contact_residuals.md §2, §5, §7). A family derives from it and
+/// adds only its residual, its DoF list and its settings. Not registered itself.
+template <int TDim, int TNumNodes, FrictionalCase TFrictional, bool TNormalVariation, int TNumNodesMaster>
+class MortarContactFamilyCondition
+    : public MortarContactFamilyBase<TDim, TNumNodes, TFrictional, TNormalVariation, TNumNodesMaster> {
+public:
+    using BaseType = MortarContactFamilyBase<TDim, TNumNodes, TFrictional, TNormalVariation, TNumNodesMaster>;
+    /// A Coulomb family: it keeps the previous operators and measures a slip.
+    static constexpr bool IsFrictional =
+        TFrictional == FrictionalCase::FRICTIONAL || TFrictional == FrictionalCase::FRICTIONAL_PENALTY;
+    using BaseType::BaseType;
+
+    /// Base reset plus (Coulomb) the previous operators (zero, not initialized).
+    void Initialize(const ProcessInfo& rCurrentProcessInfo) override;
+    /// Coulomb: computes the start-of-step operators once per step (X0 + d(1)).
+    void InitializeSolutionStep(const ProcessInfo& rCurrentProcessInfo) override;
+    /// Coulomb: lets the next step recompute the previous operators.
+    void FinalizeSolutionStep(const ProcessInfo& rCurrentProcessInfo) override;
+    /// Frictionless: Σ_i 2^i over the slave nodes that are ACTIVE. Coulomb: Σ_i s_i 3^i, s_i = 0 inactive,
+    /// 1 active-slip, 2 active-stick.
+    int GetActiveInactiveValue() const override;
+    /// Adds the pair's weighted gap g̃ to the historical WEIGHTED_GAP and D_jj (= ∫Φ_j N_j, dual basis only) to the
+    /// non-historical NODAL_AREA of the slave nodes (or flags ISOLATED); Coulomb: also the weighted slip (objective
+    /// iff not MODIFIED) to the historical WEIGHTED_SLIP. Unlike the reference, whose penalty explicit contribution
+    /// hard-codes the plane case, the axisymmetric variants weight all by 2π r / t, as their implicit operators
+    /// (docs/theory/contact_residuals.md §9).
+    void AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) override;
+    /// Base checks; Coulomb: then (ALM) VECTOR_LAGRANGE_MULTIPLIER (historical and DoFs), WEIGHTED_SLIP (historical)
+    /// and a buffer ≥ 2.
+    int Check(const ProcessInfo& rCurrentProcessInfo) const override;
+    /// Paired-condition state plus (Coulomb) the previous operators and their flags (restart with a consistent slip).
+    void Save(Serializer& rSerializer) const override;
+    void Load(Serializer& rSerializer) override;
+
+protected:
+    /// Coulomb: records the objective switch of this configuration in MODIFIED.
+    void InitializeResidual(const MortarOperators<double, TNumNodes, TNumNodesMaster>& operators,
+                            const ProcessInfo& rCurrentProcessInfo) override;
+    /// Coulomb: what the family residual measures the slip of the step with (frictional_detail::MakeSlipData).
+    /// @param[in] needs_slip whether some slave node is active (only then are the start-of-step coordinates read)
+    frictional_detail::SlipData<TDim, TNumNodes, TNumNodesMaster> SlipOfStep(bool needs_slip) const;
+
+private:
+    /// The start-of-step operators of a Coulomb family (nothing for a frictionless one).
+    std::conditional_t<IsFrictional, frictional_detail::PreviousMortarOperators<TNumNodes, TNumNodesMaster>,
+                       std::monostate>
+        mPreviousMortarOperators;
+};
+
+}  // namespace contact_app
