@@ -478,3 +478,20 @@ def example_main(
     print(text)
     print(f"outputs: {workdir / plot_name}, {workdir / summary_name}, {workdir / 'vtk_output'}")
     return 0 if result.converged else 1
+
+
+#: 2-point Gauss abscissae on [-1, 1].
+GAUSS_2 = (-1.0 / math.sqrt(3.0), 1.0 / math.sqrt(3.0))
+
+
+def quad_nodal_areas(corners: np.ndarray) -> np.ndarray:
+    """Integrals of the bilinear shape functions over a (possibly warped) quad, shape (4,)."""
+    areas = np.zeros(4)
+    signs = np.array([[-1, -1], [1, -1], [1, 1], [-1, 1]], dtype=float)
+    for xi in GAUSS_2:
+        for eta in GAUSS_2:
+            shape = 0.25 * (1 + signs[:, 0] * xi) * (1 + signs[:, 1] * eta)
+            d_xi = 0.25 * signs[:, 0] * (1 + signs[:, 1] * eta) @ corners
+            d_eta = 0.25 * signs[:, 1] * (1 + signs[:, 0] * xi) @ corners
+            areas += shape * np.linalg.norm(np.cross(d_xi, d_eta))
+    return areas

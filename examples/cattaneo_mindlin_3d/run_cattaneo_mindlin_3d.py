@@ -67,7 +67,6 @@ EXAMPLE = partial_slip.MeshedExample(HERE, MESH, DEFAULT_REFINEMENT, make_mesh.w
 DEFAULT_RATIO = 0.5  # Q/(mu P): c/a = 0.5^(1/3) = 0.794
 PRESSURE = 10.0  # MPa on the flat top, as hertz_3d: P = 10 MPa x (meshed disc area) = 3129 N
 OPTIONS = {"refinement_type": float, "ratio": ("Q/(mu P)", DEFAULT_RATIO)}  # of the command line
-GAUSS_2 = (-1.0 / math.sqrt(3.0), 1.0 / math.sqrt(3.0))
 
 
 def c_over_a(ratio: float) -> float:
@@ -75,25 +74,12 @@ def c_over_a(ratio: float) -> float:
     return (1.0 - ratio) ** (1.0 / 3.0)
 
 
-def quad_shape_integrals(corners: np.ndarray) -> np.ndarray:
-    """Integrals of the bilinear shape functions over a (possibly warped) quad, shape (4,)."""
-    areas = np.zeros(4)
-    signs = np.array([[-1, -1], [1, -1], [1, 1], [-1, 1]], dtype=float)
-    for xi in GAUSS_2:
-        for eta in GAUSS_2:
-            shape = 0.25 * (1 + signs[:, 0] * xi) * (1 + signs[:, 1] * eta)
-            d_xi = 0.25 * signs[:, 0] * (1 + signs[:, 1] * eta) @ corners
-            d_eta = 0.25 * signs[:, 1] * (1 + signs[:, 0] * xi) @ corners
-            areas += shape * np.linalg.norm(np.cross(d_xi, d_eta))
-    return areas
-
-
 def top_integrals(points: np.ndarray, quads: np.ndarray) -> tuple[float, float]:
     """(area, integral of |x|) over the top's quads, as the load conditions integrate them."""
     area = moment = 0.0
     for quad in quads:
         corners = points[quad]
-        weights = quad_shape_integrals(corners)
+        weights = common.quad_nodal_areas(corners)
         area += weights.sum()
         moment += abs(weights @ corners[:, 0])
     return area, moment
@@ -251,7 +237,7 @@ def slave_profile(main: ca.ModelPart) -> list[SlaveNode]:
     for condition in slave.Conditions:
         nodes = condition.GetNodes()
         corners = np.array([[node.X0, node.Y0, node.Z0] for node in nodes])
-        for node, area in zip(nodes, quad_shape_integrals(corners), strict=True):
+        for node, area in zip(nodes, common.quad_nodal_areas(corners), strict=True):
             areas[node.Id] = areas.get(node.Id, 0.0) + area
     profile = [
         SlaveNode(
@@ -308,7 +294,7 @@ def _applied_loads(main: ca.ModelPart) -> tuple[np.ndarray, np.ndarray]:
     for condition in main.GetSubModelPart("SurfaceLoad3D_top").Conditions:
         corners = np.array([[node.X0, node.Y0, node.Z0] for node in condition.GetNodes()])
         load = np.asarray(condition.GetValue(ca.SURFACE_LOAD), dtype=float)
-        for position, weight in zip(corners, quad_shape_integrals(corners), strict=True):
+        for position, weight in zip(corners, common.quad_nodal_areas(corners), strict=True):
             force += weight * load
             moment += np.cross(position, weight * load)
     return force, moment

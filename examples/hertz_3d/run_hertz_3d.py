@@ -42,7 +42,6 @@ MESH = "hertz_3d.msh"
 PLOT = "hertz_3d_pressure.png"
 SUMMARY = "hertz_3d_summary.txt"
 DEFAULT_REFINEMENT = 2
-GAUSS_2 = (-1.0 / math.sqrt(3.0), 1.0 / math.sqrt(3.0))
 
 
 @dataclass(kw_only=True)
@@ -82,19 +81,6 @@ def moment_radius(r: np.ndarray, force: np.ndarray) -> float:
     return common.second_moment_width(r, force, 2.5)
 
 
-def quad_nodal_areas(corners: np.ndarray) -> np.ndarray:
-    """Integrals of the bilinear shape functions over a (possibly warped) quad, shape (4,)."""
-    areas = np.zeros(4)
-    signs = np.array([[-1, -1], [1, -1], [1, 1], [-1, 1]], dtype=float)
-    for xi in GAUSS_2:
-        for eta in GAUSS_2:
-            shape = 0.25 * (1 + signs[:, 0] * xi) * (1 + signs[:, 1] * eta)
-            d_xi = 0.25 * signs[:, 0] * (1 + signs[:, 1] * eta) @ corners
-            d_eta = 0.25 * signs[:, 1] * (1 + signs[:, 0] * xi) @ corners
-            areas += shape * np.linalg.norm(np.cross(d_xi, d_eta))
-    return areas
-
-
 def _reference(node) -> np.ndarray:
     return np.array([node.X0, node.Y0, node.Z0])
 
@@ -119,7 +105,7 @@ def evaluate(analysis: RecordingAnalysis, materials: Path) -> HertzResult:
     quarter_load = 0.0
     for condition in main.GetSubModelPart("SurfaceLoad3D_top").Conditions:
         corners = np.array([_reference(node) for node in condition.GetNodes()])
-        area = quad_nodal_areas(corners).sum()
+        area = common.quad_nodal_areas(corners).sum()
         quarter_load += np.linalg.norm(np.asarray(condition.GetValue(ca.SURFACE_LOAD))) * area
     load = 4.0 * quarter_load  # the model is the quarter x, y >= 0
     modulus = common.effective_modulus(materials)
@@ -130,7 +116,7 @@ def evaluate(analysis: RecordingAnalysis, materials: Path) -> HertzResult:
     nodal_area: dict[int, float] = {}
     for condition in slave.Conditions:
         nodes = condition.GetNodes()
-        areas = quad_nodal_areas(np.array([_reference(node) for node in nodes]))
+        areas = common.quad_nodal_areas(np.array([_reference(node) for node in nodes]))
         for node, area in zip(nodes, areas, strict=True):
             nodal_area[node.Id] = nodal_area.get(node.Id, 0.0) + area
     rows = sorted(

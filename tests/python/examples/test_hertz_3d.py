@@ -118,7 +118,7 @@ def test_estimators_recover_the_hertz_profile() -> None:
     force = 3.0 * np.sqrt(1.0 - (rings / 1.2) ** 2) * 2.0 * math.pi * rings * np.diff(edges)
     assert module.moment_radius(rings, force) == pytest.approx(1.2, rel=1e-6)
     corners = np.array([[0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [2.0, 1.0, 0.0], [0.0, 1.0, 0.0]])
-    assert module.quad_nodal_areas(corners) == pytest.approx([0.5, 0.5, 0.5, 0.5], rel=1e-12)
+    assert module.common.quad_nodal_areas(corners) == pytest.approx([0.5, 0.5, 0.5, 0.5], rel=1e-12)
 
 
 def test_hertz_3d_coarsest_mesh_runs_and_converges(tmp_path: Path) -> None:
