@@ -495,3 +495,14 @@ def quad_nodal_areas(corners: np.ndarray) -> np.ndarray:
             d_eta = 0.25 * signs[:, 1] * (1 + signs[:, 0] * xi) @ corners
             areas += shape * np.linalg.norm(np.cross(d_xi, d_eta))
     return areas
+
+
+def lumped_line_lengths(part: Any) -> dict[int, float]:
+    """Node id -> half the reference length of each line condition of ``part`` through it."""
+    lengths: dict[int, float] = {}
+    for condition in part.Conditions:
+        nodes = condition.GetNodes()
+        length = math.hypot(nodes[1].X0 - nodes[0].X0, nodes[1].Y0 - nodes[0].Y0)
+        for node in nodes:
+            lengths[node.Id] = lengths.get(node.Id, 0.0) + 0.5 * length
+    return lengths

@@ -181,12 +181,7 @@ def slave_profile(main: ca.ModelPart) -> list[SlaveNode]:
     master = sorted(main.GetSubModelPart("Contact_Master").Nodes, key=lambda node: node.X0)
     master_x = np.array([node.X0 for node in master])
     master_u = np.array([node.GetSolutionStepValue(ca.DISPLACEMENT_X) for node in master])
-    lengths: dict[int, float] = {}
-    for condition in slave.Conditions:
-        nodes = condition.GetNodes()
-        length = math.hypot(nodes[1].X0 - nodes[0].X0, nodes[1].Y0 - nodes[0].Y0)
-        for node in nodes:
-            lengths[node.Id] = lengths.get(node.Id, 0.0) + 0.5 * length
+    lengths = common.lumped_line_lengths(slave)
     profile = []
     for node in slave.Nodes:
         traction = np.asarray(node.GetValue(ca.AUGMENTED_TANGENT_CONTACT_PRESSURE))[:2]

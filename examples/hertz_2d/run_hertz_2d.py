@@ -86,12 +86,7 @@ def evaluate(analysis: ca.analysis.StructuralMechanicsAnalysis, materials: Path)
     p0_analytic = 2.0 * load / (math.pi * b_analytic)
 
     slave = main.GetSubModelPart("Contact_Slave")
-    nodal_length: dict[int, float] = {}
-    for condition in slave.Conditions:
-        nodes = condition.GetNodes()
-        length = math.hypot(nodes[1].X0 - nodes[0].X0, nodes[1].Y0 - nodes[0].Y0)
-        for node in nodes:
-            nodal_length[node.Id] = nodal_length.get(node.Id, 0.0) + 0.5 * length
+    nodal_length = common.lumped_line_lengths(slave)
     profile = sorted(
         (node.X0, -node.GetValue(ca.AUGMENTED_NORMAL_CONTACT_PRESSURE), node.Is(ca.ACTIVE))
         for node in slave.Nodes
