@@ -105,17 +105,10 @@ void ALMF_CLASS::AddResidual(const State<ADScalar>& state, const ProcessInfo& rC
     AddFrictionalResidual<ADScalar>(state, rCurrentProcessInfo, rhs);
 }
 
-template <int TNS, bool TNV>
-Condition::Pointer AugmentedLagrangianMethodFrictionalMortarContactAxisymCondition<TNS, TNV>::Create(
-    IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties, Geometry::Pointer master) const {
-    return std::make_shared<AugmentedLagrangianMethodFrictionalMortarContactAxisymCondition<TNS, TNV>>(
-        new_id, std::move(slave), std::move(properties), std::move(master));
-}
-
 #undef ALMF_TEMPLATE
 #undef ALMF_CLASS
 
 CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(AugmentedLagrangianMethodFrictionalMortarContactCondition)
-CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(AugmentedLagrangianMethodFrictionalMortarContactAxisymCondition)
+CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(AugmentedLagrangianMethodFrictionalMortarContactCondition)
 
 }  // namespace contact_app

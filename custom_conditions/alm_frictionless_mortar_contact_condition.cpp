@@ -80,17 +80,10 @@ void ALM_CLASS::AddResidual(const State<ADScalar>& state, const ProcessInfo& rCu
     AddFrictionlessResidual<ADScalar, TDim, TNS, TNM>(state, k, p, rhs);
 }
 
-template <int TNS, bool TNV>
-Condition::Pointer AugmentedLagrangianMethodFrictionlessMortarContactAxisymCondition<TNS, TNV>::Create(
-    IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties, Geometry::Pointer master) const {
-    return std::make_shared<AugmentedLagrangianMethodFrictionlessMortarContactAxisymCondition<TNS, TNV>>(
-        new_id, std::move(slave), std::move(properties), std::move(master));
-}
-
 #undef ALM_TEMPLATE
 #undef ALM_CLASS
 
 CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(AugmentedLagrangianMethodFrictionlessMortarContactCondition)
-CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(AugmentedLagrangianMethodFrictionlessMortarContactAxisymCondition)
+CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(AugmentedLagrangianMethodFrictionlessMortarContactCondition)
 
 }  // namespace contact_app

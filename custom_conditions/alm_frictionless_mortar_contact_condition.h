@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include "custom_conditions/mortar_contact_axisym_condition.h"
 #include "custom_conditions/mortar_contact_family_condition.h"
 
 namespace contact_app {
@@ -45,19 +46,11 @@ protected:
                      LocalVector<ADScalar>& rhs) const override;
 };
 
-/// Axisymmetric variant (2D2N only): every Gauss weight times 2π r / THICKNESS, r = x-coordinate of the
-/// point (differentiated exactly by the AD tangent). Registers ALM[NV]FrictionlessAxisymMortarContactCondition2D2N.
+/// Axisymmetric variant (2D2N only, MortarContactAxisymCondition): every Gauss weight times 2π r / THICKNESS, r =
+/// x-coordinate of the point (differentiated exactly by the AD tangent). Registers
+/// ALM[NV]FrictionlessAxisymMortarContactCondition2D2N.
 template <int TNumNodes, bool TNormalVariation>
-class AugmentedLagrangianMethodFrictionlessMortarContactAxisymCondition
-    : public AugmentedLagrangianMethodFrictionlessMortarContactCondition<2, TNumNodes, TNormalVariation> {
-public:
-    using BaseType = AugmentedLagrangianMethodFrictionlessMortarContactCondition<2, TNumNodes, TNormalVariation>;
-    using BaseType::BaseType;
-    using BaseType::Create;
-
-    Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
-                              Geometry::Pointer master) const override;
-    bool IsAxisymmetric() const override { return true; }
-};
+using AugmentedLagrangianMethodFrictionlessMortarContactAxisymCondition = MortarContactAxisymCondition<
+    AugmentedLagrangianMethodFrictionlessMortarContactCondition<2, TNumNodes, TNormalVariation>>;
 
 }  // namespace contact_app

@@ -164,10 +164,11 @@ private:
     template class TClass<D, NS, true, NM>;
 #define CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(TClass) \
     CONTACT_APP_FOR_EACH_MORTAR_PAIR(CONTACT_APP_INSTANTIATE_NV_PAIR_, TClass)
-/// Explicit instantiations of the 2D axisymmetric variant TAxisymClass<2, TNormalVariation> × NV.
-#define CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(TAxisymClass) \
-    template class TAxisymClass<2, false>;                  \
-    template class TAxisymClass<2, true>;
+/// Explicit instantiations of the 2D axisymmetric variant of a contact family TClass (MortarContactAxisymCondition of
+/// its 2D2N pair, mortar_contact_axisym_condition.h) × NV.
+#define CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(TClass)                     \
+    template class MortarContactAxisymCondition<TClass<2, 2, false, 2>>; \
+    template class MortarContactAxisymCondition<TClass<2, 2, true, 2>>;
 /// Explicit instantiations of a family base TBase<TDim, TNumNodes, FrictionalCase, TNormalVariation, TNumNodesMaster>
 /// (MortarContactCondition, MortarContactFamilyCondition) for the five contact families × every registered pair × NV.
 #define CONTACT_APP_INSTANTIATE_FAMILY_BASE_NV_(TBase, FAMILY, D, NS, NM) \

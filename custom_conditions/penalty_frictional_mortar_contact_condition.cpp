@@ -121,17 +121,10 @@ void PENF_CLASS::AddResidual(const State<ADScalar>& state, const ProcessInfo& rC
     AddFrictionalResidual<ADScalar>(state, rCurrentProcessInfo, rhs);
 }
 
-template <int TNS, bool TNV>
-Condition::Pointer PenaltyMethodFrictionalMortarContactAxisymCondition<TNS, TNV>::Create(
-    IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties, Geometry::Pointer master) const {
-    return std::make_shared<PenaltyMethodFrictionalMortarContactAxisymCondition<TNS, TNV>>(
-        new_id, std::move(slave), std::move(properties), std::move(master));
-}
-
 #undef PENF_TEMPLATE
 #undef PENF_CLASS
 
 CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(PenaltyMethodFrictionalMortarContactCondition)
-CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(PenaltyMethodFrictionalMortarContactAxisymCondition)
+CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(PenaltyMethodFrictionalMortarContactCondition)
 
 }  // namespace contact_app

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include "custom_conditions/mortar_contact_axisym_condition.h"
 #include "custom_conditions/mortar_contact_family_condition.h"
 
 namespace contact_app {
@@ -48,19 +49,11 @@ private:
                                LocalVector<T>& rhs) const;
 };
 
-/// Axisymmetric variant (2D2N only): every Gauss weight (current and start-of-step operators, explicit gap and
-/// slip) times 2π r / THICKNESS. Registers Penalty[NV]FrictionalAxisymMortarContactCondition2D2N.
+/// Axisymmetric variant (2D2N only, MortarContactAxisymCondition): every Gauss weight (current and start-of-step
+/// operators, explicit gap and slip) times 2π r / THICKNESS. Registers
+/// Penalty[NV]FrictionalAxisymMortarContactCondition2D2N.
 template <int TNumNodes, bool TNormalVariation>
-class PenaltyMethodFrictionalMortarContactAxisymCondition
-    : public PenaltyMethodFrictionalMortarContactCondition<2, TNumNodes, TNormalVariation> {
-public:
-    using BaseType = PenaltyMethodFrictionalMortarContactCondition<2, TNumNodes, TNormalVariation>;
-    using BaseType::BaseType;
-    using BaseType::Create;
-
-    Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
-                              Geometry::Pointer master) const override;
-    bool IsAxisymmetric() const override { return true; }
-};
+using PenaltyMethodFrictionalMortarContactAxisymCondition =
+    MortarContactAxisymCondition<PenaltyMethodFrictionalMortarContactCondition<2, TNumNodes, TNormalVariation>>;
 
 }  // namespace contact_app

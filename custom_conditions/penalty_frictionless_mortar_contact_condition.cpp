@@ -73,17 +73,10 @@ void PENALTY_CLASS::AddResidual(const State<ADScalar>& state, const ProcessInfo&
                                                              this->MutableCouplingRecord());
 }
 
-template <int TNS, bool TNV>
-Condition::Pointer PenaltyMethodFrictionlessMortarContactAxisymCondition<TNS, TNV>::Create(
-    IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties, Geometry::Pointer master) const {
-    return std::make_shared<PenaltyMethodFrictionlessMortarContactAxisymCondition<TNS, TNV>>(
-        new_id, std::move(slave), std::move(properties), std::move(master));
-}
-
 #undef PENALTY_TEMPLATE
 #undef PENALTY_CLASS
 
 CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(PenaltyMethodFrictionlessMortarContactCondition)
-CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(PenaltyMethodFrictionlessMortarContactAxisymCondition)
+CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(PenaltyMethodFrictionlessMortarContactCondition)
 
 }  // namespace contact_app
