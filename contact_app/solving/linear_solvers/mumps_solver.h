@@ -20,6 +20,7 @@ namespace contact_app {
 /// (ICNTL(7) = 0). Why and when: docs/architecture.md, "Solving layer".
 class MumpsSolver : public LinearSolver {
 public:
+    /// @param ordering fill-reducing ordering: "auto" and "metis" give METIS, "amd" MUMPS's AMD
     /// @param workspace_percent ICNTL(14): the working space the factorisation may take beyond the analysis's estimate,
     ///        in per cent (MUMPS's default, 20). When pivoting needs more (MUMPS errors -8, -9) the factorisation is
     ///        redone with it doubled (at least +20), at most twice; Statistics().workspace_enlargements counts them.
