@@ -323,8 +323,12 @@ void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Pr
     const MortarIntegrator<TDim, TNS, TNM, Coordinate> integrator(integration, segmentation);
     MortarPairIntegration<Coordinate, TDim, TNS, TNM> pair;
     // Normals that follow the iterate, once the sets settled: the face-centre NORMAL is this face's own (differentiated
-    // here), the nodal ones are held here and their derivative recorded for NodalNormalCoupling.
-    const bool normals_follow = CouplesNodalNormals(rCurrentProcessInfo) && NormalsInTangent(rCurrentProcessInfo);
+    // here), the nodal ones are held here and their derivative recorded for NodalNormalCoupling. A penalty pair (the
+    // only kind that couples them) without an active slave node adds nothing, so it has nothing to record.
+    bool any_active = false;
+    for (std::size_t j = 0; j < slave.size(); ++j) any_active = any_active || slave[j].Is(ACTIVE);
+    const bool normals_follow =
+        CouplesNodalNormals(rCurrentProcessInfo) && NormalsInTangent(rCurrentProcessInfo) && any_active;
     if constexpr (TNV) {
         const auto nodal = WithValues(FaceNodalUnitNormals<TDim, TNS, Coordinate>(seeded_x1), normals);
         const SpatialVector<Coordinate, TDim> center =

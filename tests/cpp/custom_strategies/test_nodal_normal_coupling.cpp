@@ -291,6 +291,21 @@ TEST(NodalNormalGate, HoldsTheNormalsWhileTheSetsMove) {
     }
 }
 
+/// A penalty pair without an active slave node adds nothing to the residual: it skips the normal pass.
+TEST(NodalNormalGate, APairWithoutActiveNodesRecordsNothing) {
+    NormalModel m;
+    Build(m, "PenaltyFrictional", 3, false);
+    for (const auto& node : m.contact->Nodes()) node->Set(ACTIVE, false);
+    Tangent(m, true);
+    Matrix record;
+    for (const auto& pair : m.pairs)
+        EXPECT_FALSE(dynamic_cast<const NodalNormalCouplingSource&>(*pair).GetNodalNormalCoupling(0, record));
+    m.contact->GetNode(2).Set(ACTIVE, true);  // shared by both slave faces: every pair records
+    Tangent(m, true);
+    for (const auto& pair : m.pairs)
+        EXPECT_TRUE(dynamic_cast<const NodalNormalCouplingSource&>(*pair).GetNodalNormalCoupling(0, record));
+}
+
 INSTANTIATE_TEST_SUITE_P(Families, NodalNormalTangent,
                          ::testing::Values(Case{"PenaltyFrictionless", false},
                                            Case{"PenaltyFrictional", false}, Case{"PenaltyFrictional", true}),
