@@ -202,15 +202,6 @@ SegmentationSettings MORTAR_CLASS::SegmentationSettingsFrom(const ProcessInfo& r
 }
 
 MORTAR_TEMPLATE
-bool MORTAR_CLASS::CouplesNodalNormals(const ProcessInfo& rCurrentProcessInfo) const {
-    // The penalty families only: the ALM ones gained nothing measurable and lost the 3D press fit's first step
-    // (docs/theory/mortar.md §7 "Normals that follow the iterate").
-    constexpr bool penalty = TF == FrictionalCase::FRICTIONLESS_PENALTY || TF == FrictionalCase::FRICTIONAL_PENALTY;
-    return penalty && !TNV && rCurrentProcessInfo.Has(CONSIDER_NORMAL_VARIATION) &&
-           rCurrentProcessInfo.GetValue(CONSIDER_NORMAL_VARIATION) != 0;
-}
-
-MORTAR_TEMPLATE
 bool MORTAR_CLASS::GetNodalNormalCoupling(int j, Matrix& rForcePerNormal) const {
     if (mForcePerNormal.size() == 0) return false;
     rForcePerNormal = mForcePerNormal.middleCols(j * TDim, TDim);

@@ -107,9 +107,9 @@ public:
     void Load(Serializer& rSerializer) override;
 
     virtual bool IsAxisymmetric() const { return false; }
-    /// True for the non-NV penalty families when CONSIDER_NORMAL_VARIATION ≠ 0 (the criteria move the nodal normals
-    /// every iteration).
-    bool CouplesNodalNormals(const ProcessInfo& rCurrentProcessInfo) const override;
+    /// False: a family that differentiates the normals the criteria move opts in (PenaltyMortarContactCondition); the ALM
+    /// families hold them (docs/theory/mortar.md §7 "Normals that follow the iterate").
+    bool CouplesNodalNormals(const ProcessInfo&) const override { return false; }
     bool GetNodalNormalCoupling(int j, Matrix& rForcePerNormal) const override;
     /// What this pair added to the nodal sums at the last explicit pass (pair_nodal_share.h).
     const PairNodalShare<TDim, TNumNodes>& NodalShare() const { return mNodalShare; }

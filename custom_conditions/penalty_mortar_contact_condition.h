@@ -3,12 +3,14 @@
 
 #include "custom_conditions/mortar_contact_condition.h"
 #include "custom_conditions/nodal_gap_coupling.h"
+#include "custom_utilities/contact_variables.h"
 
 namespace contact_app {
 
 /// What the two penalty families share beyond MortarContactCondition: the record of their nodal-gap coupling terms
 /// (nodal_gap_coupling.h, docs/theory/mortar.md §7 "Nodal penalty"). Every tangent evaluation starts it afresh, the
-/// family residual's AD pass fills it, and NodalPenaltyCoupling reads it after the builder assembled the pairs.
+/// family residual's AD pass fills it, and NodalPenaltyCoupling reads it after the builder assembled the pairs. The
+/// penalty pairs also differentiate the nodal normals the criteria move every iteration (NodalNormalCoupling).
 template <int TDim, int TNumNodes, FrictionalCase TFrictional, bool TNormalVariation, int TNumNodesMaster>
 class PenaltyMortarContactCondition
     : public MortarContactCondition<TDim, TNumNodes, TFrictional, TNormalVariation, TNumNodesMaster>,
@@ -28,6 +30,12 @@ public:
     }
     bool GetNodalGapCoupling(int j, NodalGapCouplingTerms& rTerms) const override {
         return mCouplingRecord.Get(j, rTerms);
+    }
+    /// Without NV, when CONSIDER_NORMAL_VARIATION ≠ 0 (the criteria move the nodal normals every iteration): the
+    /// penalty pairs differentiate them (docs/theory/mortar.md §7 "Normals that follow the iterate").
+    bool CouplesNodalNormals(const ProcessInfo& rCurrentProcessInfo) const override {
+        return !TNormalVariation && rCurrentProcessInfo.Has(CONSIDER_NORMAL_VARIATION) &&
+               rCurrentProcessInfo.GetValue(CONSIDER_NORMAL_VARIATION) != 0;
     }
 
 protected:

@@ -36,8 +36,9 @@ struct CoupledPair {
 struct NormalCouplingData {
     std::vector<CoupledPair> pairs;
     std::unordered_map<IndexType, NormalDerivative> derivatives;
-    /// slave node id → (pair index, local index of the node in it), nodes of two or more penalty pairs only
+    /// slave node id → (index into penalty_pairs, local index), nodes of two or more penalty pairs only
     std::map<IndexType, std::vector<std::pair<std::size_t, int>>> penalty_nodes;
+    std::vector<std::size_t> penalty_pairs;  ///< indices into pairs of those that read the nodal penalty gap
 };
 
 NormalCouplingData CollectNormalCoupling(ModelPart& rModelPart, const ProcessInfo& rProcessInfo) {
@@ -57,7 +58,6 @@ NormalCouplingData CollectNormalCoupling(ModelPart& rModelPart, const ProcessInf
     for (std::size_t p = 0; p < data.pairs.size(); ++p) {
         const Geometry& slave = data.pairs[p].condition->GetGeometry();
         for (std::size_t j = 0; j < slave.size(); ++j) {
-            if (data.pairs[p].penalty != nullptr) data.penalty_nodes[slave[j].Id()].push_back({p, static_cast<int>(j)});
             if (data.derivatives.count(slave[j].Id()) != 0) continue;
             NormalDerivative derivative;
             if (mean_normal.Compute(slave[j], nodes, derivative.jacobian)) {
@@ -70,8 +70,13 @@ NormalCouplingData CollectNormalCoupling(ModelPart& rModelPart, const ProcessInf
             data.derivatives.emplace(slave[j].Id(), std::move(derivative));
         }
     }
-    for (auto it = data.penalty_nodes.begin(); it != data.penalty_nodes.end();)
-        it = it->second.size() < 2 ? data.penalty_nodes.erase(it) : std::next(it);
+    std::vector<const Condition*> penalty;
+    for (std::size_t p = 0; p < data.pairs.size(); ++p)
+        if (data.pairs[p].penalty != nullptr) {
+            data.penalty_pairs.push_back(p);
+            penalty.push_back(data.pairs[p].condition);
+        }
+    data.penalty_nodes = ContactUtilities::SharedSlaveNodes(penalty);
     return data;
 }
 
@@ -92,8 +97,10 @@ void NodalNormalCoupling::AddGraph(ModelPart& rModelPart, const ProcessInfo& rPr
         for (const auto& [c, jc] : node_pairs)
             for (const auto& [d, jd] : node_pairs) {
                 if (c == d) continue;
-                for (std::size_t m = 0; m < data.pairs[d].condition->GetGeometry().size(); ++m)
-                    rSink(data.pairs[c].ids, DerivativeOf(data, data.pairs[d], static_cast<int>(m)).ids, nullptr);
+                const CoupledPair& pair_d = data.pairs[data.penalty_pairs[d]];
+                for (std::size_t m = 0; m < pair_d.condition->GetGeometry().size(); ++m)
+                    rSink(data.pairs[data.penalty_pairs[c]].ids, DerivativeOf(data, pair_d, static_cast<int>(m)).ids,
+                          nullptr);
             }
 }
 
@@ -115,13 +122,14 @@ void NodalNormalCoupling::AddLHS(ModelPart& rModelPart, const ProcessInfo& rProc
         std::vector<bool> coupled(node_pairs.size());
         for (std::size_t i = 0; i < node_pairs.size(); ++i) {
             const auto& [p, j] = node_pairs[i];
-            coupled[i] = data.pairs[p].penalty->GetNodalGapCoupling(j, terms[i]) && terms[i].gap_normal_gradient.size() > 0;
+            coupled[i] = data.pairs[data.penalty_pairs[p]].penalty->GetNodalGapCoupling(j, terms[i]) &&
+                         terms[i].gap_normal_gradient.size() > 0;
         }
         for (std::size_t c = 0; c < node_pairs.size(); ++c) {
             if (!coupled[c]) continue;
             for (std::size_t d = 0; d < node_pairs.size(); ++d) {
                 if (d == c || !coupled[d]) continue;
-                const CoupledPair& pair_d = data.pairs[node_pairs[d].first];
+                const CoupledPair& pair_d = data.pairs[data.penalty_pairs[node_pairs[d].first]];
                 const bool slipping = terms[c].slipping && terms[d].slipping;
                 for (std::size_t m = 0; m < pair_d.condition->GetGeometry().size(); ++m) {
                     const NormalDerivative& derivative = DerivativeOf(data, pair_d, static_cast<int>(m));
@@ -133,7 +141,7 @@ void NodalNormalCoupling::AddLHS(ModelPart& rModelPart, const ProcessInfo& rProc
                     if (slipping)
                         block.noalias() -= terms[c].force_per_slip *
                                            (terms[d].slip_normal_gradient.middleCols(column, dim) * derivative.jacobian);
-                    rSink(data.pairs[node_pairs[c].first].ids, derivative.ids, &block);
+                    rSink(data.pairs[data.penalty_pairs[node_pairs[c].first]].ids, derivative.ids, &block);
                 }
             }
         }

@@ -8,6 +8,7 @@
 
 #include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/exceptions.h"
+#include "contact_app/kernel/condition.h"
 #include "contact_app/kernel/dof.h"
 #include "contact_app/kernel/model_part.h"
 
@@ -245,6 +246,17 @@ void ContactUtilities::ActivateConditionWithActiveNodes(ModelPart& model_part) {
 
 void ContactUtilities::ScaleNode(Array3& point, const Array3& normal, double length) {
     point += normal * length;
+}
+
+std::map<IndexType, std::vector<std::pair<std::size_t, int>>> ContactUtilities::SharedSlaveNodes(
+    const std::vector<const Condition*>& pairs) {
+    std::map<IndexType, std::vector<std::pair<std::size_t, int>>> nodes;
+    for (std::size_t p = 0; p < pairs.size(); ++p) {
+        const Geometry& slave = pairs[p]->GetGeometry();
+        for (std::size_t j = 0; j < slave.size(); ++j) nodes[slave[j].Id()].emplace_back(p, static_cast<int>(j));
+    }
+    for (auto it = nodes.begin(); it != nodes.end();) it = it->second.size() < 2 ? nodes.erase(it) : std::next(it);
+    return nodes;
 }
 
 double ContactUtilities::DistancePoints(const Array3& a, const Array3& b) {

@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <map>
+#include <utility>
+#include <vector>
+
 #include "contact_app/kernel/geometries/geometry.h"
 #include "contact_app/kernel/types.h"
 
 namespace contact_app {
 
+class Condition;
 class Dof;
 class ModelPart;
 class Node;
@@ -83,6 +88,12 @@ public:
     /// @brief A pair condition is ACTIVE iff one of its slave (geometry part 0) nodes is ACTIVE; conditions without
     ///        geometry parts use their own nodes.
     static void ActivateConditionWithActiveNodes(ModelPart& model_part);
+
+    /// @brief The slave nodes that two or more of @p pairs hold (their own geometry, the slave face): node id →
+    ///        (index into @p pairs, local index of the node in that pair), in the order of @p pairs. The nodal laws'
+    ///        cross-pair tangent blocks live between these pairs (docs/theory/mortar.md §7).
+    static std::map<IndexType, std::vector<std::pair<std::size_t, int>>> SharedSlaveNodes(
+        const std::vector<const Condition*>& pairs);
 
     /// @brief Moves @p point by @p length along @p normal (point += n·L).
     static void ScaleNode(Array3& point, const Array3& normal, double length);
