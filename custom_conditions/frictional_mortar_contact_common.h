@@ -125,7 +125,7 @@ Eigen::Matrix<T, TDim, 1> TangentSlip(const TState& s, const SlipData<TDim, TNS,
     if (d.objective) {
         const Eigen::Matrix<T, 1, TNS> dd = s.operators.D.row(j) - d.previous->D.row(j).template cast<T>();
         const Eigen::Matrix<T, 1, TNM> dm = s.operators.M.row(j) - d.previous->M.row(j).template cast<T>();
-        r = dd * s.x1 - dm * s.x2;
+        r = frictionless_detail::MortarDifference<T, TDim>(s, dd, dm);
     } else {
         const NodeCoordinates<T, TDim, TNS> dx1 = s.x1 - d.x1_previous.template cast<T>();
         const NodeCoordinates<T, TDim, TNM> dx2 = s.x2 - d.x2_previous.template cast<T>();

@@ -104,10 +104,20 @@ T PairArea(const TState& s, int j) {
     return s.operators.D.row(j).sum();
 }
 
+/// d x1 − m x2 for a row d of D (or of D − D_old) and the matching row m of M, taken about the slave face's first node.
+/// Σ_k d_k = Σ_l m_l (Σ N1 = Σ N2 = 1 at every Gauss point), so the value is the same, with round-off of ε·h rather
+/// than ε·|x|: in a model far from the origin the weighted gap's round-off, times the penalty, set the floor of the
+/// multiplier residual (docs/theory/mortar.md §2). The origin is a constant: the derivatives are unchanged.
+template <class T, int TDim, class TState, class TRowD, class TRowM>
+Eigen::Matrix<T, 1, TDim> MortarDifference(const TState& s, const TRowD& d, const TRowM& m) {
+    const Eigen::Matrix<T, 1, TDim> origin = Values(Eigen::Matrix<T, 1, TDim>(s.x1.row(0))).template cast<T>();
+    return d * (s.x1.rowwise() - origin) - m * (s.x2.rowwise() - origin);
+}
+
 /// g̃_j = −n_j·(D x1 − M x2)_j of the pair (positive = open).
 template <class T, int TDim, class TState>
 T PairGap(const TState& s, int j) {
-    const Eigen::Matrix<T, 1, TDim> r = s.operators.D.row(j) * s.x1 - s.operators.M.row(j) * s.x2;
+    const Eigen::Matrix<T, 1, TDim> r = MortarDifference<T, TDim>(s, s.operators.D.row(j), s.operators.M.row(j));
     return -r.dot(s.normals.row(j));
 }
 

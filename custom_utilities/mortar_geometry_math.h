@@ -89,18 +89,18 @@ bool InverseMapValue(const std::array<Vec2<double>, TNumNodes>& q, const Vec2<do
     for (int iteration = 0; iteration < 30; ++iteration) {
         const auto shape = FaceShapeFunctions<TNumNodes, double>(xi);
         const auto grad = FaceShapeGradients<TNumNodes, double>(xi);
-        Vec2<double> r = -p;
+        Vec2<double> r = q[0] - p;  // relative to q[0], as ProjectAlongDirection: no round-off of ε|p|
         Eigen::Matrix2d jac = Eigen::Matrix2d::Zero();
         for (int k = 0; k < TNumNodes; ++k) {
-            r += shape[k] * q[k];
-            jac += q[k] * grad.row(k);
+            r += shape[k] * (q[k] - q[0]);
+            jac += (q[k] - q[0]) * grad.row(k);
         }
         const double det = jac.determinant();
         if (!(std::abs(det) > 1.0e-14 * scale * scale)) return false;
         const Vec2<double> step = -jac.inverse() * r;
         xi += step;
         if (!xi.allFinite() || xi.cwiseAbs().maxCoeff() > 1.0e6) return false;
-        if (step.norm() < 1.0e-14 || TNumNodes == 3) return true;
+        if (step.norm() < 1.0e-12 || TNumNodes == 3) return true;
     }
     return false;
 }
@@ -129,9 +129,13 @@ template <int TNumNodes, int TDim, class T>
 bool ProjectAlongDirection(const NodeCoordinates<T, TDim, TNumNodes>& face, const SpatialVector<T, TDim>& x,
                            const SpatialVector<T, TDim>& dir, Eigen::Matrix<T, TDim - 1, 1>& eta) {
     using Square = Eigen::Matrix<double, TDim, TDim>;
-    const NodeCoordinates<double, TDim, TNumNodes> fv = Values(face);
-    const SpatialVector<double, TDim> xv = Values(x), dv = Values(dir);
-    const double scale = (fv.rowwise() - fv.row(0)).rowwise().norm().maxCoeff();
+    // Newton on coordinates relative to the face's first node: in absolute ones the residual carries round-off of
+    // ε|x|, and where |x| is large against the face (a model away from the origin) the steps stalled above the
+    // tolerance, so points were dropped at random between nearly equal iterates (docs/theory/mortar.md §2).
+    const SpatialVector<double, TDim> origin = Values(face).row(0).transpose();
+    const NodeCoordinates<double, TDim, TNumNodes> fv = Values(face).rowwise() - origin.transpose();
+    const SpatialVector<double, TDim> xv = Values(x) - origin, dv = Values(dir);
+    const double scale = fv.rowwise().norm().maxCoeff();
     if (!(scale > 0.0) || !std::isfinite(scale) || !(dv.norm() > 0.0)) return false;
     SpatialVector<double, TDim> u = SpatialVector<double, TDim>::Zero();
     u.template head<TDim - 1>() = FaceCentroid<TNumNodes>();
@@ -147,7 +151,8 @@ bool ProjectAlongDirection(const NodeCoordinates<T, TDim, TNumNodes>& face, cons
         const SpatialVector<double, TDim> step = -jac.inverse() * r;
         u += step;
         if (!u.allFinite() || u.template head<TDim - 1>().cwiseAbs().maxCoeff() > 1.0e6) return false;
-        converged = TNumNodes <= TDim || step.norm() < 1.0e-14 * (1.0 + u.norm());
+        // Quadratic convergence: a step of 1e-12 leaves an error far below round-off, and the step in T below refines.
+        converged = TNumNodes <= TDim || step.norm() < 1.0e-12 * (1.0 + u.norm());
     }
     if (!converged) return false;
     const Eigen::Matrix<double, TDim - 1, 1> e0 = u.template head<TDim - 1>();

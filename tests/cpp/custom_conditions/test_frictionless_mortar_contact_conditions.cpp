@@ -8,6 +8,7 @@
 
 #include "../custom_utilities/mortar_test_utilities.h"
 #include "contact_condition_test_utilities.h"
+#include "custom_conditions/frictionless_mortar_contact_common.h"
 #include "custom_conditions/mortar_contact_condition.h"
 #include "custom_utilities/contact_utilities.h"
 #include "custom_utilities/mortar_normals.h"
@@ -501,6 +502,58 @@ TEST_P(ALMInactiveNames, InactiveNodesReturnTheMultipliersToZero) {
         const double delta = rhs[nu + i] / lhs(nu + i, nu + i);  // LHS Δq = RHS
         EXPECT_NEAR(lambda + delta, 0.0, 1e-12) << i;
     }
+}
+
+/// The pair's weighted gap far from the origin: taken about the slave face (MortarDifference), its round-off is that of
+/// the face size, not of the position. Computed from absolute coordinates it carried ε·|x|·Σ|D|, which times the penalty
+/// was the multiplier residual's floor of the 3D press fit (about 1e-9 against its absolute tolerance 1e-9).
+TEST(MortarDifference, WeightedGapRoundOffDoesNotGrowWithTheDistanceFromTheOrigin) {
+    using Pair = MortarPairTraits<3, 4, 4>;
+    struct PairState {
+        MortarOperators<double, 4, 4> operators;
+        NodeCoordinates<double, 3, 4> x1, x2, normals;
+    };
+    std::mt19937 rng(7);
+    int compared = 0;
+    double worst_absolute = 0.0;
+    for (int sample = 0; sample < 20; ++sample) {
+        const auto pair = MakeRandomPair<Pair>(rng, 0.3);
+        const MortarIntegrator<3, 4, 4, double> integrator;
+        PairState home{{}, pair.slave, pair.master, FaceNodalUnitNormals<3, 4, double>(pair.slave)};
+        const auto integrated = IntegrateMortarPair(integrator, pair.slave, FaceCenterUnitNormal<3, 4, double>(pair.slave),
+                                                    pair.master, home.normals, true);
+        if (!integrated.used) continue;
+        home.operators = integrated.operators;
+        PairState away = home;  // the same operators and normals (they are translation invariant), moved coordinates
+        const Eigen::RowVector3d offset(3.0e4, -2.0e4, 1.0e4);
+        away.x1.rowwise() += offset;
+        away.x2.rowwise() += offset;
+        for (int j = 0; j < 4; ++j) {
+            // Reference: the same (already rounded) coordinates in long double, differenced before the products.
+            long double reference = 0.0L;
+            for (int c = 0; c < 3; ++c) {
+                long double r = 0.0L;
+                for (int k = 0; k < 4; ++k)
+                    r += static_cast<long double>(away.operators.D(j, k)) *
+                         (static_cast<long double>(away.x1(k, c)) - static_cast<long double>(away.x1(0, c)));
+                for (int l = 0; l < 4; ++l)
+                    r -= static_cast<long double>(away.operators.M(j, l)) *
+                         (static_cast<long double>(away.x2(l, c)) - static_cast<long double>(away.x1(0, c)));
+                reference -= r * static_cast<long double>(away.normals(j, c));
+            }
+            const double scale = home.operators.D.row(j).cwiseAbs().sum() + home.operators.M.row(j).cwiseAbs().sum();
+            const double gap = frictionless_detail::PairGap<double, 3>(away, j);
+            // About the face: round-off of ε·h·Σ|D| (h ≈ 1); about the origin it was ε·4e4·Σ|D|.
+            EXPECT_LT(std::abs(gap - static_cast<double>(reference)), 64.0 * 2.2e-16 * scale)
+                << "sample " << sample << " node " << j;
+            const Eigen::RowVector3d absolute = away.operators.D.row(j) * away.x1 - away.operators.M.row(j) * away.x2;
+            worst_absolute = std::max(worst_absolute, std::abs(-absolute.dot(away.normals.row(j)) -
+                                                               static_cast<double>(reference)) / scale);
+            ++compared;
+        }
+    }
+    EXPECT_GT(compared, 40);
+    EXPECT_GT(worst_absolute, 1e-13);  // the absolute form's error, which the test would otherwise not notice
 }
 
 INSTANTIATE_TEST_SUITE_P(Registered, ALMInactiveNames, ::testing::ValuesIn(ALMRegisteredNames()),
