@@ -139,9 +139,19 @@ bool Segment3D(const NodeCoordinates<T, 3, TNS>& slave, const detail::PlaneFrame
         tag[k] = polygon.tags[order[k]];
     }
     if (settings.consider_tessellation) {
-        plane[n] = Vec2<T>::Zero();
-        for (int k = 0; k < n; ++k) plane[n] += plane[k];
-        plane[n] /= static_cast<double>(n);
+        // The polygon's area centroid, a continuous function of its vertices: a vertex that appears next to another
+        // (a master node crossing a slave edge) splits one cell and leaves the rest as they were. The vertex average
+        // jumped there, moving every cell, and with a rule that is not exact for the integrand D and M jumped too
+        // (docs/theory/mortar.md §1).
+        T twice_area = T(0.0);
+        Vec2<T> moment = Vec2<T>::Zero();
+        for (int k = 0; k < n; ++k) {
+            const Vec2<T> p = plane[k] - plane[0], q = plane[(k + 1) % n] - plane[0];
+            const T cross = p[0] * q[1] - q[0] * p[1];
+            twice_area += cross;
+            moment += cross * (p + q);
+        }
+        plane[n] = plane[0] + moment / (3.0 * twice_area);
         tag[n] = kBase;
     }
     const int n_points = settings.consider_tessellation ? n + 1 : n;
