@@ -76,14 +76,16 @@ template <class T, int TDim>
 using MortarCells = std::vector<MortarCell<T, TDim>>;
 
 /// Segmentation options (ProcessInfo DISTANCE_THRESHOLD, ZERO_TOLERANCE_FACTOR; Properties
-/// CONSIDER_TESSELLATION). Defaults are the Kratos ones.
+/// CONSIDER_TESSELLATION). Defaults are the Kratos ones except consider_tessellation.
 struct SegmentationSettings {
     /// A master node farther than this in front of the slave (along the slave normal) → no cells.
     double distance_threshold = 1.0e24;
     /// Multiplies the tolerance of the inside tests.
     double zero_tolerance_factor = 1.0;
-    /// Triangulate the clipped polygon around its centroid (n cells) instead of a vertex fan (n−2 cells).
-    bool consider_tessellation = false;
+    /// Triangulate the clipped polygon around its area centroid (n cells, continuous in the vertices) instead of a
+    /// fan from its first vertex (n−2 cells, the reference's default, which jumps when the first vertex changes):
+    /// true by default, docs/theory/mortar.md §1.
+    bool consider_tessellation = true;
 };
 
 /// Integration options (Properties INTEGRATION_ORDER_CONTACT; axisymmetric THICKNESS).

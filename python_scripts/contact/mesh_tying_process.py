@@ -29,7 +29,6 @@ def mesh_tying_defaults() -> dict[str, Any]:
         "stiffness_factor": 1.0,
         "scale_factor": 1.0,
     }
-    defaults["consider_tessellation"] = True
     defaults["mesh_tying_property_ids"] = pair_block(0)
     return defaults
 

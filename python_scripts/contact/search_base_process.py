@@ -71,7 +71,9 @@ def base_defaults(interface_key: str, property_key: str) -> dict[str, Any]:
         "interval": [0.0, "End"],
         "zero_tolerance_factor": 1.0,
         "integration_order": 2,
-        "consider_tessellation": False,
+        # True, unlike the reference: the cells fan around the overlap's area centroid,
+        # continuous in the vertices (docs/theory/mortar.md section 1).
+        "consider_tessellation": True,
         "normal_check_proportion": 0.1,
         "search_parameters": SEARCH_PARAMETERS_DEFAULTS,
     }

@@ -28,6 +28,22 @@ public:
     static SpatialVector<double, D> Normal(const NodeCoordinates<double, D, NS>& slave) {
         return FaceCenterUnitNormal<D, NS, double>(slave);
     }
+    /// Area centroid of the union of the (3D) cells on a planar slave, from the cells' own centroids.
+    static Eigen::VectorXd AreaCentroid(const NodeCoordinates<double, D, NS>& slave, const Cells& cells) {
+        Eigen::VectorXd moment = Eigen::VectorXd::Zero(D);
+        double area = 0.0;
+        for (const auto& cell : cells) {
+            std::array<Eigen::Vector3d, 3> x;
+            for (int v = 0; v < 3; ++v) {
+                x[v].setZero();
+                x[v].head(D) = detail::FacePoint<NS, D, double, double>(slave, cell.local[v]);
+            }
+            const double a = 0.5 * (x[1] - x[0]).cross(x[2] - x[0]).norm();
+            moment += a * ((x[0] + x[1] + x[2]) / 3.0).head(D);
+            area += a;
+        }
+        return moment / area;
+    }
 };
 TYPED_TEST_SUITE(ExactMortarSegmentationTest, testing::PairKinds, testing::PairKindName);
 
@@ -59,7 +75,7 @@ TYPED_TEST(ExactMortarSegmentationTest, test_segmentation_belong_tags_locate_the
     constexpr int B = TypeParam::BaseTag;
     std::mt19937 rng(7);
     const typename Test::Segmentation segmentation;
-    int edge_vertices = 0;
+    int edge_vertices = 0, centroids = 0;
     for (int sample = 0; sample < 100; ++sample) {
         const auto pair = testing::MakeRandomPair<TypeParam>(rng, 0.6, false);  // slave in z = 0 (y = 0)
         typename Test::Cells cells;
@@ -74,7 +90,10 @@ TYPED_TEST(ExactMortarSegmentationTest, test_segmentation_belong_tags_locate_the
                     const Eigen::VectorXd o = pair.slave.row(0).transpose();
                     return Eigen::VectorXd(q - (q - o).dot(n) * n);
                 };
-                if (tag < Test::NS) {
+                if (tag == B) {  // the fan's apex: the overlap's area centroid, the same point for every cell
+                    if constexpr (Test::D == 3) EXPECT_LT((x - Test::AreaCentroid(pair.slave, cells)).norm(), 1e-9);
+                    ++centroids;
+                } else if (tag < Test::NS) {
                     EXPECT_LT((x - in_plane(pair.slave.row(tag))).norm(), 1e-9);
                 } else if (tag < B) {
                     EXPECT_LT((x - in_plane(pair.master.row(tag - Test::NS))).norm(), 1e-9);
@@ -97,6 +116,7 @@ TYPED_TEST(ExactMortarSegmentationTest, test_segmentation_belong_tags_locate_the
         }
     }
     if (Test::D == 3) EXPECT_GT(edge_vertices, 50);
+    if (Test::D == 3) EXPECT_GT(centroids, 50);  // the default cells fan around the area centroid
 }
 
 TYPED_TEST(ExactMortarSegmentationTest, test_segmentation_degenerate_configurations_are_empty_or_valid) {
