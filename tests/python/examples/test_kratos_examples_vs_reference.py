@@ -13,7 +13,7 @@ snapshot up to it. How far each system gets, and the tolerances:
 | model | reference (120 s cap) | compared here | largest difference |
 |---|---|---|---|
 | press fit 2D | t = 0.641, then an inverted element | t <= 0.005 | 7.5e-7 |
-| press fit 3D | step 1; 2-13 unconverged; singular | step 1, y only; ours to 1.4 (slow) | 2.5 % (ref asymmetric) |
+| press fit 3D | step 1; 2-13 unconverged; singular | step 1 (y); to 1.4 (slow) | 2.5 % (ref) |
 | cylinders vertical | t = 0.29 | t <= 0.29 (slow) | 6.2e-4 reactions |
 | cylinders horizontal 1 | t = 0.1275 | t <= 0.1275 (slow) | 8.5e-4 displacement |
 | cylinders horizontal 2 | t = 0.1475 | t <= 0.1475 (slow) | 1.6e-2 reactions (ref) |
