@@ -21,7 +21,10 @@ from typing import Any
 
 import numpy as np
 
-from ._utilities import array_components, check_historical, get_flag, get_variable
+from .._core import Model
+from ..model_part_lookup import get_model_part
+from ..parameters import Parameters
+from ._utilities import array_components, check_historical, get_flag, get_variable, model_part_of
 
 NODAL_KINDS = ("Double", "Component", "Array", "Vector")
 GAUSS_KINDS = ("Double", "Array", "Vector")
@@ -112,6 +115,17 @@ def nearest_index(times: list[float], time: float) -> int:
         return len(times) - 1
     before, after = times[position - 1], times[position]
     return position if after - time <= time - before else position - 1
+
+
+def results_model_part(model: Model, settings: Parameters) -> Any:
+    """Return ``model_part_name``, or its sub-model part ``sub_model_part_name`` if given."""
+    model_part = model_part_of(model, settings)
+    sub_name = settings["sub_model_part_name"].GetString()
+    if sub_name:
+        model_part = get_model_part(
+            model, f"{model_part.FullName()}.{sub_name}", settings.Where("sub_model_part_name")
+        )
+    return model_part
 
 
 def read_columns(

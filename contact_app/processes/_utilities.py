@@ -16,12 +16,26 @@ from typing import Any
 import numpy as np
 
 from .. import _core
-from .._core import InputError
+from .._core import InputError, Model
 from ..json_input import decode, quote, read_bytes
+from ..model_part_lookup import get_model_part
 from ..parameters import Parameters, suggest
 from .function_expression import FunctionExpression
 
 SCALAR_KINDS = ("Double", "Component")
+
+# The keys (and their order) every assign/fix process starts its DEFAULTS with.
+COMMON_DEFAULTS: dict[str, Any] = {
+    "help": "",
+    "mesh_id": 0,
+    "model_part_name": "",
+    "variable_name": "",
+    "interval": [0.0, 1e30],
+}
+
+
+# The keys every assign/fix process needs (``validate``'s ``required``).
+TARGET_KEYS = ("model_part_name", "variable_name")
 
 
 def validate(
@@ -48,6 +62,13 @@ def validate(
     settings.ValidateAndAssignDefaults(defaults)
 
 
+def model_part_of(model: Model, settings: Parameters) -> Any:
+    """Return the model part ``settings["model_part_name"]`` names (InputError if none)."""
+    return get_model_part(
+        model, settings["model_part_name"].GetString(), settings.Where("model_part_name")
+    )
+
+
 def get_variable(name: str, where: str, kinds: Sequence[str] | None = None) -> Any:
     """Return the registered variable ``name``, optionally checking its kind.
 
@@ -62,11 +83,12 @@ def get_variable(name: str, where: str, kinds: Sequence[str] | None = None) -> A
     try:
         variable = _core.get_variable(name)
     except KeyError:
-        hint = suggest(name, list(_core.registered_variables()))
-        raise InputError(
-            f'unknown variable "{quote(name)}"\n  where:    {where}\n'
-            "  expected: a registered Kratos variable name such as DISPLACEMENT_X"
-            + (f"\n  fix:      {hint}" if hint else "")
+        raise _unknown_name(
+            "variable",
+            name,
+            where,
+            _core.registered_variables(),
+            "a registered Kratos variable name such as DISPLACEMENT_X",
         ) from None
     if kinds is not None and variable.Type() not in kinds:
         raise InputError(
@@ -81,12 +103,24 @@ def get_flag(name: str, where: str) -> Any:
     try:
         return _core.get_flag(name)
     except KeyError:
-        hint = suggest(name, list(_core.registered_flags()))
-        raise InputError(
-            f'unknown flag "{quote(name)}"\n  where:    {where}\n'
-            "  expected: a Kratos flag name such as ACTIVE, SLAVE or MASTER"
-            + (f"\n  fix:      {hint}" if hint else "")
+        raise _unknown_name(
+            "flag",
+            name,
+            where,
+            _core.registered_flags(),
+            "a Kratos flag name such as ACTIVE, SLAVE or MASTER",
         ) from None
+
+
+def _unknown_name(
+    kind: str, name: str, where: str, registered: Iterable[str], expected: str
+) -> InputError:
+    """The error for a variable or flag name that is not registered, with the nearest name."""
+    hint = suggest(name, list(registered))
+    return InputError(
+        f'unknown {kind} "{quote(name)}"\n  where:    {where}\n'
+        f"  expected: {expected}" + (f"\n  fix:      {hint}" if hint else "")
+    )
 
 
 def array_components(variable: Any, where: str) -> list[Any]:
@@ -319,6 +353,20 @@ def scalar_values_of(
         None if entry.IsNull() else ScalarValue.from_parameters(entry, local_axes)
         for entry in values
     ]
+
+
+def scalar_value_of(settings: Parameters) -> ScalarValue:
+    """Read ``value`` (null = 0.0) in the system of ``local_axes``."""
+    if settings["value"].IsNull():
+        settings["value"].SetDouble(0.0)
+    return ScalarValue.from_parameters(
+        settings["value"], LocalAxes.from_parameters(settings["local_axes"])
+    )
+
+
+def vector_value_of(settings: Parameters) -> list[ScalarValue | None]:
+    """Read ``value`` ([v_x, v_y, v_z], null = untouched) in the system of ``local_axes``."""
+    return scalar_values_of(settings["value"], 3, LocalAxes.from_parameters(settings["local_axes"]))
 
 
 def flags_of(constrained: Parameters, count: int) -> list[bool]:

@@ -14,26 +14,14 @@ also applies the value, so it holds at the start time.
 from __future__ import annotations
 
 from .._core import Model
-from ..model_part_lookup import get_model_part
 from ..parameters import Parameters
-from ._assignments import NodalAssignment
-from ._utilities import (
-    SCALAR_KINDS,
-    LocalAxes,
-    ScalarValue,
-    check_historical,
-    get_variable,
-    validate,
-)
+from ._assignments import NodalAssignment, NodalAssignmentProcess, read_target
+from ._utilities import COMMON_DEFAULTS, SCALAR_KINDS, TARGET_KEYS, scalar_value_of, validate
 from .interval import Interval
 from .process import Process
 
 DEFAULTS = {
-    "help": "",
-    "mesh_id": 0,
-    "model_part_name": "",
-    "variable_name": "",
-    "interval": [0.0, 1e30],
+    **COMMON_DEFAULTS,
     "constrained": True,
     "value": None,
     "local_axes": {},
@@ -45,7 +33,7 @@ def Factory(settings: Parameters, model: Model) -> Process:
     return AssignScalarVariableProcess(model, settings["Parameters"])
 
 
-class AssignScalarVariableProcess(Process):
+class AssignScalarVariableProcess(NodalAssignmentProcess):
     """Assign a scalar nodal value, fixed from step start to step end.
 
     Args:
@@ -58,37 +46,9 @@ class AssignScalarVariableProcess(Process):
     """
 
     def __init__(self, model: Model, settings: Parameters) -> None:
-        validate(
-            settings,
-            DEFAULTS,
-            ("model_part_name", "variable_name"),
-            "assign_scalar_variable_process",
-        )
-        if settings["value"].IsNull():
-            settings["value"].SetDouble(0.0)
-        model_part = get_model_part(
-            model, settings["model_part_name"].GetString(), settings.Where("model_part_name")
-        )
-        where = settings.Where("variable_name")
-        variable = get_variable(settings["variable_name"].GetString(), where, SCALAR_KINDS)
-        check_historical(model_part, variable, where)
-        local_axes = LocalAxes.from_parameters(settings["local_axes"])
-        self.assignment = NodalAssignment(
-            model_part,
-            variable,
-            ScalarValue.from_parameters(settings["value"], local_axes),
-            Interval.from_parameters(settings["interval"]),
-            settings["constrained"].GetBool(),
-        )
-
-    def ExecuteBeforeSolutionLoop(self) -> None:
-        """Apply the value at the start time too."""
-        self.ExecuteInitializeSolutionStep()
-
-    def ExecuteInitializeSolutionStep(self) -> None:
-        """Fix and assign if TIME is in the interval."""
-        self.assignment.apply()
-
-    def ExecuteFinalizeSolutionStep(self) -> None:
-        """Free the DoFs fixed in this step."""
-        self.assignment.release()
+        validate(settings, DEFAULTS, TARGET_KEYS, "assign_scalar_variable_process")
+        model_part, variable, _ = read_target(model, settings, SCALAR_KINDS, historical=True)
+        value = scalar_value_of(settings)
+        interval = Interval.from_parameters(settings["interval"])
+        constrained = settings["constrained"].GetBool()
+        super().__init__([NodalAssignment(model_part, variable, value, interval, constrained)])

@@ -15,19 +15,14 @@ here). Values are kept after the interval.
 from __future__ import annotations
 
 from .._core import Model
-from ..model_part_lookup import get_model_part
 from ..parameters import Parameters
-from ._assignments import ConditionAssignment
-from ._utilities import SCALAR_KINDS, LocalAxes, ScalarValue, get_variable, validate
+from ._assignments import ConditionAssignment, ConditionAssignmentProcess, read_target
+from ._utilities import COMMON_DEFAULTS, SCALAR_KINDS, TARGET_KEYS, scalar_value_of, validate
 from .interval import Interval
 from .process import Process
 
 DEFAULTS = {
-    "help": "",
-    "mesh_id": 0,
-    "model_part_name": "",
-    "variable_name": "",
-    "interval": [0.0, 1e30],
+    **COMMON_DEFAULTS,
     "value": None,
     "local_axes": {},
 }
@@ -38,7 +33,7 @@ def Factory(settings: Parameters, model: Model) -> Process:
     return AssignScalarVariableToConditionsProcess(model, settings["Parameters"])
 
 
-class AssignScalarVariableToConditionsProcess(Process):
+class AssignScalarVariableToConditionsProcess(ConditionAssignmentProcess):
     """Set a scalar condition value in the steps of the interval.
 
     Args:
@@ -50,28 +45,8 @@ class AssignScalarVariableToConditionsProcess(Process):
     """
 
     def __init__(self, model: Model, settings: Parameters) -> None:
-        validate(
-            settings,
-            DEFAULTS,
-            ("model_part_name", "variable_name"),
-            "assign_scalar_variable_to_conditions_process",
-        )
-        if settings["value"].IsNull():
-            settings["value"].SetDouble(0.0)
-        model_part = get_model_part(
-            model, settings["model_part_name"].GetString(), settings.Where("model_part_name")
-        )
-        variable = get_variable(
-            settings["variable_name"].GetString(), settings.Where("variable_name"), SCALAR_KINDS
-        )
-        local_axes = LocalAxes.from_parameters(settings["local_axes"])
-        self.assignment = ConditionAssignment(
-            model_part,
-            variable,
-            ScalarValue.from_parameters(settings["value"], local_axes),
-            Interval.from_parameters(settings["interval"]),
-        )
-
-    def ExecuteInitializeSolutionStep(self) -> None:
-        """Set the condition values if TIME is in the interval."""
-        self.assignment.apply()
+        validate(settings, DEFAULTS, TARGET_KEYS, "assign_scalar_variable_to_conditions_process")
+        model_part, variable, _ = read_target(model, settings, SCALAR_KINDS, historical=False)
+        value = scalar_value_of(settings)
+        interval = Interval.from_parameters(settings["interval"])
+        super().__init__([ConditionAssignment(model_part, variable, value, interval)])

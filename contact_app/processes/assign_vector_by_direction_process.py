@@ -17,20 +17,15 @@ components are assigned in 2D (DOMAIN_SIZE 2), X, Y and Z in 3D, each like
 from __future__ import annotations
 
 from .._core import Model
-from ..model_part_lookup import get_model_part
 from ..parameters import Parameters
-from ._assignments import NodalAssignment
+from ._assignments import NodalAssignment, NodalAssignmentProcess, read_target
 from ._direction import component_values, domain_size
-from ._utilities import LocalAxes, array_components, check_historical, get_variable, validate
+from ._utilities import COMMON_DEFAULTS, TARGET_KEYS, LocalAxes, validate
 from .interval import Interval
 from .process import Process
 
 DEFAULTS = {
-    "help": "",
-    "mesh_id": 0,
-    "model_part_name": "",
-    "variable_name": "",
-    "interval": [0.0, 1e30],
+    **COMMON_DEFAULTS,
     "modulus": None,
     "constrained": True,
     "direction": None,
@@ -43,7 +38,7 @@ def Factory(settings: Parameters, model: Model) -> Process:
     return AssignVectorByDirectionProcess(model, settings["Parameters"])
 
 
-class AssignVectorByDirectionProcess(Process):
+class AssignVectorByDirectionProcess(NodalAssignmentProcess):
     """Assign ``modulus * unit direction`` on the nodes, fixed from step start to step end.
 
     Args:
@@ -59,36 +54,18 @@ class AssignVectorByDirectionProcess(Process):
         validate(
             settings,
             DEFAULTS,
-            ("model_part_name", "variable_name", "modulus", "direction"),
+            (*TARGET_KEYS, "modulus", "direction"),
             "assign_vector_by_direction_process",
         )
-        model_part = get_model_part(
-            model, settings["model_part_name"].GetString(), settings.Where("model_part_name")
-        )
-        where = settings.Where("variable_name")
-        variable = get_variable(settings["variable_name"].GetString(), where, ("Array",))
-        check_historical(model_part, variable, where)
-        count = domain_size(model_part, settings.Where())
-        values = component_values(
-            settings, model_part, count, 1.0e-12, LocalAxes.from_parameters(settings["local_axes"])
-        )
+        target = read_target(model, settings, ("Array",), historical=True)
+        count = domain_size(target.model_part, settings.Where())
+        local_axes = LocalAxes.from_parameters(settings["local_axes"])
+        values = component_values(settings, target.model_part, count, 1.0e-12, local_axes)
         interval = Interval.from_parameters(settings["interval"])
         constrained = settings["constrained"].GetBool()
-        self.assignments = [
-            NodalAssignment(model_part, component, value, interval, constrained)
-            for component, value in zip(array_components(variable, where), values, strict=False)
-        ]
-
-    def ExecuteBeforeSolutionLoop(self) -> None:
-        """Apply the values at the start time too."""
-        self.ExecuteInitializeSolutionStep()
-
-    def ExecuteInitializeSolutionStep(self) -> None:
-        """Fix and assign the components if TIME is in the interval."""
-        for assignment in self.assignments:
-            assignment.apply()
-
-    def ExecuteFinalizeSolutionStep(self) -> None:
-        """Free the DoFs fixed in this step."""
-        for assignment in self.assignments:
-            assignment.release()
+        super().__init__(
+            [
+                NodalAssignment(target.model_part, component, value, interval, constrained)
+                for component, value in zip(target.components(), values, strict=False)
+            ]
+        )

@@ -17,20 +17,15 @@ components are always assigned, each like ``assign_scalar_variable_to_conditions
 from __future__ import annotations
 
 from .._core import Model
-from ..model_part_lookup import get_model_part
 from ..parameters import Parameters
-from ._assignments import ConditionAssignment
+from ._assignments import ConditionAssignment, ConditionAssignmentProcess, read_target
 from ._direction import component_values
-from ._utilities import LocalAxes, array_components, get_variable, validate
+from ._utilities import COMMON_DEFAULTS, TARGET_KEYS, LocalAxes, validate
 from .interval import Interval
 from .process import Process
 
 DEFAULTS = {
-    "help": "",
-    "mesh_id": 0,
-    "model_part_name": "",
-    "variable_name": "",
-    "interval": [0.0, 1e30],
+    **COMMON_DEFAULTS,
     "modulus": None,
     "direction": None,
     "local_axes": {},
@@ -42,7 +37,7 @@ def Factory(settings: Parameters, model: Model) -> Process:
     return AssignVectorByDirectionToConditionProcess(model, settings["Parameters"])
 
 
-class AssignVectorByDirectionToConditionProcess(Process):
+class AssignVectorByDirectionToConditionProcess(ConditionAssignmentProcess):
     """Set ``modulus * unit direction`` on the conditions in the steps of the interval.
 
     Args:
@@ -57,24 +52,16 @@ class AssignVectorByDirectionToConditionProcess(Process):
         validate(
             settings,
             DEFAULTS,
-            ("model_part_name", "variable_name", "modulus", "direction"),
+            (*TARGET_KEYS, "modulus", "direction"),
             "assign_vector_by_direction_to_condition_process",
         )
-        model_part = get_model_part(
-            model, settings["model_part_name"].GetString(), settings.Where("model_part_name")
-        )
-        where = settings.Where("variable_name")
-        variable = get_variable(settings["variable_name"].GetString(), where, ("Array",))
-        values = component_values(
-            settings, model_part, 3, 1.0e-6, LocalAxes.from_parameters(settings["local_axes"])
-        )
+        target = read_target(model, settings, ("Array",), historical=False)
+        local_axes = LocalAxes.from_parameters(settings["local_axes"])
+        values = component_values(settings, target.model_part, 3, 1.0e-6, local_axes)
         interval = Interval.from_parameters(settings["interval"])
-        self.assignments = [
-            ConditionAssignment(model_part, component, value, interval)
-            for component, value in zip(array_components(variable, where), values, strict=True)
-        ]
-
-    def ExecuteInitializeSolutionStep(self) -> None:
-        """Set the condition values if TIME is in the interval."""
-        for assignment in self.assignments:
-            assignment.apply()
+        super().__init__(
+            [
+                ConditionAssignment(target.model_part, component, value, interval)
+                for component, value in zip(target.components(), values, strict=True)
+            ]
+        )

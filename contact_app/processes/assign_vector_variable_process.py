@@ -14,27 +14,14 @@ Each non-null component behaves as ``assign_scalar_variable_process`` on ``<VAR>
 from __future__ import annotations
 
 from .._core import Model
-from ..model_part_lookup import get_model_part
 from ..parameters import Parameters
-from ._assignments import NodalAssignment
-from ._utilities import (
-    LocalAxes,
-    array_components,
-    check_historical,
-    flags_of,
-    get_variable,
-    scalar_values_of,
-    validate,
-)
+from ._assignments import NodalAssignment, NodalAssignmentProcess, read_target
+from ._utilities import COMMON_DEFAULTS, TARGET_KEYS, flags_of, validate, vector_value_of
 from .interval import Interval
 from .process import Process
 
 DEFAULTS = {
-    "help": "",
-    "mesh_id": 0,
-    "model_part_name": "",
-    "variable_name": "",
-    "interval": [0.0, 1e30],
+    **COMMON_DEFAULTS,
     "constrained": None,
     "value": [0.0, 0.0, 0.0],
     "local_axes": {},
@@ -46,7 +33,7 @@ def Factory(settings: Parameters, model: Model) -> Process:
     return AssignVectorVariableProcess(model, settings["Parameters"])
 
 
-class AssignVectorVariableProcess(Process):
+class AssignVectorVariableProcess(NodalAssignmentProcess):
     """Assign the non-null components of a nodal 3-vector, each fixed from step start to end.
 
     Args:
@@ -59,42 +46,19 @@ class AssignVectorVariableProcess(Process):
     """
 
     def __init__(self, model: Model, settings: Parameters) -> None:
-        validate(
-            settings,
-            DEFAULTS,
-            ("model_part_name", "variable_name"),
-            "assign_vector_variable_process",
-        )
+        validate(settings, DEFAULTS, TARGET_KEYS, "assign_vector_variable_process")
         if settings["constrained"].IsNull():
             settings["constrained"].SetBool(True)
-        model_part = get_model_part(
-            model, settings["model_part_name"].GetString(), settings.Where("model_part_name")
-        )
-        where = settings.Where("variable_name")
-        variable = get_variable(settings["variable_name"].GetString(), where, ("Array",))
-        check_historical(model_part, variable, where)
-        local_axes = LocalAxes.from_parameters(settings["local_axes"])
-        values = scalar_values_of(settings["value"], 3, local_axes)
+        target = read_target(model, settings, ("Array",), historical=True)
+        values = vector_value_of(settings)
         constrained = flags_of(settings["constrained"], 3)
         interval = Interval.from_parameters(settings["interval"])
-        self.assignments = [
-            NodalAssignment(model_part, component, value, interval, fixed)
-            for component, value, fixed in zip(
-                array_components(variable, where), values, constrained, strict=True
-            )
-            if value is not None
-        ]
-
-    def ExecuteBeforeSolutionLoop(self) -> None:
-        """Apply the values at the start time too."""
-        self.ExecuteInitializeSolutionStep()
-
-    def ExecuteInitializeSolutionStep(self) -> None:
-        """Fix and assign the non-null components if TIME is in the interval."""
-        for assignment in self.assignments:
-            assignment.apply()
-
-    def ExecuteFinalizeSolutionStep(self) -> None:
-        """Free the DoFs fixed in this step."""
-        for assignment in self.assignments:
-            assignment.release()
+        super().__init__(
+            [
+                NodalAssignment(target.model_part, component, value, interval, fixed)
+                for component, value, fixed in zip(
+                    target.components(), values, constrained, strict=True
+                )
+                if value is not None
+            ]
+        )

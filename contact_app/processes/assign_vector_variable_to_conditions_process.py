@@ -14,19 +14,14 @@ Each non-null component behaves as ``assign_scalar_variable_to_conditions_proces
 from __future__ import annotations
 
 from .._core import Model
-from ..model_part_lookup import get_model_part
 from ..parameters import Parameters
-from ._assignments import ConditionAssignment
-from ._utilities import LocalAxes, array_components, get_variable, scalar_values_of, validate
+from ._assignments import ConditionAssignment, ConditionAssignmentProcess, read_target
+from ._utilities import COMMON_DEFAULTS, TARGET_KEYS, validate, vector_value_of
 from .interval import Interval
 from .process import Process
 
 DEFAULTS = {
-    "help": "",
-    "mesh_id": 0,
-    "model_part_name": "",
-    "variable_name": "",
-    "interval": [0.0, 1e30],
+    **COMMON_DEFAULTS,
     "value": [0.0, 0.0, 0.0],
     "local_axes": {},
 }
@@ -37,7 +32,7 @@ def Factory(settings: Parameters, model: Model) -> Process:
     return AssignVectorVariableToConditionsProcess(model, settings["Parameters"])
 
 
-class AssignVectorVariableToConditionsProcess(Process):
+class AssignVectorVariableToConditionsProcess(ConditionAssignmentProcess):
     """Set the non-null components of a condition 3-vector in the steps of the interval.
 
     Args:
@@ -49,27 +44,14 @@ class AssignVectorVariableToConditionsProcess(Process):
     """
 
     def __init__(self, model: Model, settings: Parameters) -> None:
-        validate(
-            settings,
-            DEFAULTS,
-            ("model_part_name", "variable_name"),
-            "assign_vector_variable_to_conditions_process",
-        )
-        model_part = get_model_part(
-            model, settings["model_part_name"].GetString(), settings.Where("model_part_name")
-        )
-        where = settings.Where("variable_name")
-        variable = get_variable(settings["variable_name"].GetString(), where, ("Array",))
-        local_axes = LocalAxes.from_parameters(settings["local_axes"])
-        values = scalar_values_of(settings["value"], 3, local_axes)
+        validate(settings, DEFAULTS, TARGET_KEYS, "assign_vector_variable_to_conditions_process")
+        target = read_target(model, settings, ("Array",), historical=False)
+        values = vector_value_of(settings)
         interval = Interval.from_parameters(settings["interval"])
-        self.assignments = [
-            ConditionAssignment(model_part, component, value, interval)
-            for component, value in zip(array_components(variable, where), values, strict=True)
-            if value is not None
-        ]
-
-    def ExecuteInitializeSolutionStep(self) -> None:
-        """Set the condition values if TIME is in the interval."""
-        for assignment in self.assignments:
-            assignment.apply()
+        super().__init__(
+            [
+                ConditionAssignment(target.model_part, component, value, interval)
+                for component, value in zip(target.components(), values, strict=True)
+                if value is not None
+            ]
+        )

@@ -13,19 +13,14 @@ of that step.
 from __future__ import annotations
 
 from .._core import Model
-from ..model_part_lookup import get_model_part
 from ..parameters import Parameters
-from ._assignments import NodalAssignment
-from ._utilities import SCALAR_KINDS, get_variable, validate
+from ._assignments import NodalAssignment, NodalAssignmentProcess, read_target
+from ._utilities import COMMON_DEFAULTS, SCALAR_KINDS, TARGET_KEYS, validate
 from .interval import Interval
 from .process import Process
 
 DEFAULTS = {
-    "help": "",
-    "mesh_id": 0,
-    "model_part_name": "",
-    "variable_name": "",
-    "interval": [0.0, 1e30],
+    **COMMON_DEFAULTS,
     "constrained": True,
 }
 
@@ -35,7 +30,7 @@ def Factory(settings: Parameters, model: Model) -> Process:
     return FixScalarVariableProcess(model, settings["Parameters"])
 
 
-class FixScalarVariableProcess(Process):
+class FixScalarVariableProcess(NodalAssignmentProcess):
     """Hold a nodal DoF fixed from step start to step end, value untouched.
 
     Args:
@@ -47,34 +42,8 @@ class FixScalarVariableProcess(Process):
     """
 
     def __init__(self, model: Model, settings: Parameters) -> None:
-        validate(
-            settings,
-            DEFAULTS,
-            ("model_part_name", "variable_name"),
-            "fix_scalar_variable_process",
-        )
-        model_part = get_model_part(
-            model, settings["model_part_name"].GetString(), settings.Where("model_part_name")
-        )
-        variable = get_variable(
-            settings["variable_name"].GetString(), settings.Where("variable_name"), SCALAR_KINDS
-        )
-        self.assignment = NodalAssignment(
-            model_part,
-            variable,
-            None,
-            Interval.from_parameters(settings["interval"]),
-            settings["constrained"].GetBool(),
-        )
-
-    def ExecuteBeforeSolutionLoop(self) -> None:
-        """Fix at the start time too."""
-        self.ExecuteInitializeSolutionStep()
-
-    def ExecuteInitializeSolutionStep(self) -> None:
-        """Fix if TIME is in the interval."""
-        self.assignment.apply()
-
-    def ExecuteFinalizeSolutionStep(self) -> None:
-        """Free the DoFs fixed in this step."""
-        self.assignment.release()
+        validate(settings, DEFAULTS, TARGET_KEYS, "fix_scalar_variable_process")
+        model_part, variable, _ = read_target(model, settings, SCALAR_KINDS, historical=False)
+        interval = Interval.from_parameters(settings["interval"])
+        constrained = settings["constrained"].GetBool()
+        super().__init__([NodalAssignment(model_part, variable, None, interval, constrained)])

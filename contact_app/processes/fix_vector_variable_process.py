@@ -7,26 +7,20 @@ Keys: ``model_part_name`` and ``variable_name`` (required; a 3-vector), ``constr
 three; default [true, true, true]; false components are left alone), ``interval`` ([0, "End"]),
 ``mesh_id`` (legacy, 0), ``help``.
 
-Fixed at the start of every step in the interval (and before the solution loop), freed at the end
-of that step.
+Each component with a true flag behaves as ``fix_scalar_variable_process`` on ``<VAR>_X/_Y/_Z``.
 """
 
 from __future__ import annotations
 
 from .._core import Model
-from ..model_part_lookup import get_model_part
 from ..parameters import Parameters
-from ._assignments import NodalAssignment
-from ._utilities import array_components, flags_of, get_variable, validate
+from ._assignments import NodalAssignment, NodalAssignmentProcess, read_target
+from ._utilities import COMMON_DEFAULTS, TARGET_KEYS, flags_of, validate
 from .interval import Interval
 from .process import Process
 
 DEFAULTS = {
-    "help": "",
-    "mesh_id": 0,
-    "model_part_name": "",
-    "variable_name": "",
-    "interval": [0.0, 1e30],
+    **COMMON_DEFAULTS,
     "constrained": None,
 }
 
@@ -36,7 +30,7 @@ def Factory(settings: Parameters, model: Model) -> Process:
     return FixVectorVariableProcess(model, settings["Parameters"])
 
 
-class FixVectorVariableProcess(Process):
+class FixVectorVariableProcess(NodalAssignmentProcess):
     """Hold the chosen components of a nodal 3-vector fixed from step start to step end.
 
     Args:
@@ -49,38 +43,16 @@ class FixVectorVariableProcess(Process):
     """
 
     def __init__(self, model: Model, settings: Parameters) -> None:
-        validate(
-            settings,
-            DEFAULTS,
-            ("model_part_name", "variable_name"),
-            "fix_vector_variable_process",
-        )
+        validate(settings, DEFAULTS, TARGET_KEYS, "fix_vector_variable_process")
         if settings["constrained"].IsNull():
             settings.AddValue("constrained", [True, True, True])
-        model_part = get_model_part(
-            model, settings["model_part_name"].GetString(), settings.Where("model_part_name")
-        )
-        where = settings.Where("variable_name")
-        variable = get_variable(settings["variable_name"].GetString(), where, ("Array",))
+        target = read_target(model, settings, ("Array",), historical=False)
         interval = Interval.from_parameters(settings["interval"])
-        self.assignments = [
-            NodalAssignment(model_part, component, None, interval, True)
-            for component, fixed in zip(
-                array_components(variable, where), flags_of(settings["constrained"], 3), strict=True
-            )
-            if fixed
-        ]
-
-    def ExecuteBeforeSolutionLoop(self) -> None:
-        """Fix at the start time too."""
-        self.ExecuteInitializeSolutionStep()
-
-    def ExecuteInitializeSolutionStep(self) -> None:
-        """Fix if TIME is in the interval."""
-        for assignment in self.assignments:
-            assignment.apply()
-
-    def ExecuteFinalizeSolutionStep(self) -> None:
-        """Free the DoFs fixed in this step."""
-        for assignment in self.assignments:
-            assignment.release()
+        fixed = flags_of(settings["constrained"], 3)
+        super().__init__(
+            [
+                NodalAssignment(target.model_part, component, None, interval, True)
+                for component, fix in zip(target.components(), fixed, strict=True)
+                if fix
+            ]
+        )

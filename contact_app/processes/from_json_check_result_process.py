@@ -29,7 +29,6 @@ from typing import Any
 from .. import _core
 from .._core import InputError, Model
 from ..json_input import load_file
-from ..model_part_lookup import get_model_part
 from ..parameters import Parameters
 from ._json_results import (
     Column,
@@ -40,6 +39,7 @@ from ._json_results import (
     nodal_value,
     node_key,
     read_columns,
+    results_model_part,
 )
 from ._utilities import validate
 from .process import Process
@@ -90,17 +90,9 @@ class FromJsonCheckResultProcess(Process):
             "from_json_check_result_process",
         )
         self.settings = settings
-        model_part = get_model_part(
-            model, settings["model_part_name"].GetString(), settings.Where("model_part_name")
-        )
-        sub_name = settings["sub_model_part_name"].GetString()
-        if sub_name:
-            model_part = get_model_part(
-                model, f"{model_part.FullName()}.{sub_name}", settings.Where("sub_model_part_name")
-            )
-        self.model_part = model_part
+        self.model_part = results_model_part(model, settings)
         self.historical, self.columns, self.gauss_columns, self.flag = read_columns(
-            settings, model_part, "check_variables", "gauss_points_check_variables"
+            settings, self.model_part, "check_variables", "gauss_points_check_variables"
         )
         self.input_file_name = settings["input_file_name"].GetString()
         self.tolerance = settings["tolerance"].GetDouble()

@@ -32,7 +32,6 @@ import numpy as np
 
 from .. import _core
 from .._core import InputError, Model
-from ..model_part_lookup import get_model_part
 from ..parameters import Parameters
 from ._json_results import (
     element_key,
@@ -40,6 +39,7 @@ from ._json_results import (
     nodal_value,
     node_key,
     read_columns,
+    results_model_part,
 )
 from ._utilities import validate
 from .process import Process
@@ -79,15 +79,7 @@ class JsonOutputProcess(Process):
 
     def __init__(self, model: Model, settings: Parameters) -> None:
         validate(settings, DEFAULTS, ("output_file_name", "model_part_name"), "json_output_process")
-        model_part = get_model_part(
-            model, settings["model_part_name"].GetString(), settings.Where("model_part_name")
-        )
-        sub_name = settings["sub_model_part_name"].GetString()
-        if sub_name:
-            model_part = get_model_part(
-                model, f"{model_part.FullName()}.{sub_name}", settings.Where("sub_model_part_name")
-            )
-        self.model_part = model_part
+        self.model_part = results_model_part(model, settings)
         self.output_file_name = settings["output_file_name"].GetString()
         if not self.output_file_name:
             raise InputError(
@@ -95,7 +87,7 @@ class JsonOutputProcess(Process):
                 '  fix:      name the file, e.g. "case_results.json"'
             )
         self.historical, self.columns, self.gauss_columns, self.flag = read_columns(
-            settings, model_part, "output_variables", "gauss_points_output_variables"
+            settings, self.model_part, "output_variables", "gauss_points_output_variables"
         )
         self.time_frequency = settings["time_frequency"].GetDouble()
         self.resultant_solution = settings["resultant_solution"].GetBool()

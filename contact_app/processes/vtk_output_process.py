@@ -52,9 +52,8 @@ import numpy as np
 from .. import _core
 from .._core import InputError, Model
 from ..legacy_keys import convert_legacy_keys
-from ..model_part_lookup import get_model_part
 from ..parameters import Parameters
-from ._utilities import check_historical, get_flag, get_variable, validate
+from ._utilities import check_historical, get_flag, get_variable, model_part_of, validate
 from .process import OutputProcess
 
 LOGGER = logging.getLogger(__name__)
@@ -127,9 +126,7 @@ class VtkOutputProcess(OutputProcess):
     def __init__(self, model: Model, settings: Parameters) -> None:
         convert_legacy_keys(settings, "vtk_output_process")  # output_frequency, folder_name
         validate(settings, DEFAULTS, ("model_part_name",), "vtk_output_process")
-        self.model_part = get_model_part(
-            model, settings["model_part_name"].GetString(), settings.Where("model_part_name")
-        )
+        self.model_part = model_part_of(model, settings)
         self.binary = _choice(settings, "file_format", ("binary", "ascii")) == "binary"
         self.precision = settings["output_precision"].GetInt()
         self.control = _choice(settings, "output_control_type", ("step", "time"))
