@@ -27,6 +27,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from contact_cases import contact_process, problem_data, roller, static_contact_solver, top_load
 from patch_meshes import Mdpa, box, faces_on
 
 import contact_app as ca
@@ -97,81 +98,31 @@ def _write_case(directory: Path, upper_tetrahedra: bool) -> None:
     (directory / "materials.json").write_text(json.dumps({"properties": materials}))
 
 
-def _roller(part: str, axis: int) -> dict:
-    constrained = [index == axis for index in range(3)]
-    return {
-        "python_module": "assign_vector_variable_process",
-        "kratos_module": "KratosMultiphysics",
-        "Parameters": {
-            "model_part_name": f"Structure.{part}",
-            "variable_name": "DISPLACEMENT",
-            "constrained": constrained,
-            "value": [0.0 if fixed else None for fixed in constrained],
-        },
-    }
-
-
 def _parameters(directory: Path, mortar_type: str) -> dict:
     return {
-        "problem_data": {
-            "problem_name": "patch_3d",
-            "parallel_type": "OpenMP",
-            "start_time": 0.0,
-            "end_time": 1.0,
-            "echo_level": 0,
-        },
-        "solver_settings": {
-            "model_part_name": "Structure",
-            "domain_size": 3,
-            "solver_type": "Static",
-            "echo_level": 0,
-            "analysis_type": "non_linear",
-            "move_mesh_flag": False,
-            "model_import_settings": {
-                "input_type": "mdpa",
-                "input_filename": str(directory / "patch_3d"),
-            },
-            "material_import_settings": {"materials_filename": str(directory / "materials.json")},
-            "contact_settings": {"mortar_type": mortar_type},
-            "time_stepping": {"time_step": 1.0},
-            "convergence_criterion": "contact_residual_criterion",
-            "residual_relative_tolerance": 1.0e-12,
-            "residual_absolute_tolerance": 1.0e-14,
-            "displacement_relative_tolerance": 1.0e-12,
-            "displacement_absolute_tolerance": 1.0e-14,
-            "max_iteration": 20,
-            "linear_solver_settings": {"solver_type": "skyline_lu_factorization"},
-        },
+        "problem_data": problem_data("patch_3d", 1.0),
+        "solver_settings": static_contact_solver(
+            directory,
+            "patch_3d",
+            3,
+            mortar_type,
+            move_mesh_flag=False,
+            residual_relative_tolerance=1.0e-12,
+            residual_absolute_tolerance=1.0e-14,
+            displacement_relative_tolerance=1.0e-12,
+            displacement_absolute_tolerance=1.0e-14,
+            max_iteration=20,
+            linear_solver_settings={"solver_type": "skyline_lu_factorization"},
+        ),
         "processes": {
             "constraints_process_list": [
-                _roller("Roller_X", 0),
-                _roller("Roller_Y", 1),
-                _roller("Roller_Z", 2),
+                roller("Roller_X", (0,)),
+                roller("Roller_Y", (1,)),
+                roller("Roller_Z", (2,)),
             ],
-            "loads_process_list": [
-                {
-                    "python_module": "assign_vector_by_direction_to_condition_process",
-                    "kratos_module": "KratosMultiphysics",
-                    "Parameters": {
-                        "model_part_name": "Structure.Top_Load",
-                        "variable_name": "SURFACE_LOAD",
-                        "modulus": PRESSURE,
-                        "direction": [0.0, 0.0, -1.0],
-                        "interval": [0.0, "End"],
-                    },
-                }
-            ],
+            "loads_process_list": [top_load("SURFACE_LOAD", PRESSURE, [0.0, 0.0, -1.0])],
             "contact_process_list": [
-                {
-                    "python_module": "alm_contact_process",
-                    "kratos_module": "KratosMultiphysics.ContactStructuralMechanicsApplication",
-                    "Parameters": {
-                        "model_part_name": "Structure",
-                        "contact_model_part": {"0": ["Contact_Slave", "Contact_Master"]},
-                        "assume_master_slave": {"0": ["Contact_Slave"]},
-                        "contact_type": MORTAR_TYPES[mortar_type],
-                    },
-                }
+                contact_process("alm_contact_process", MORTAR_TYPES[mortar_type])
             ],
         },
         "output_processes": {},

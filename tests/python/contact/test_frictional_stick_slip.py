@@ -31,6 +31,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from contact_cases import contact_process, hold_displacement, problem_data, top_load
 from patch_meshes import Mdpa, box, faces_on, quad_block
 
 import contact_app as ca
@@ -276,13 +277,7 @@ def _parameters(
     if mpc:
         process = "mpc_contact_process"
     return {
-        "problem_data": {
-            "problem_name": "stick_slip",
-            "parallel_type": "OpenMP",
-            "start_time": 0.0,
-            "end_time": float(len(SLIDES)),
-            "echo_level": 0,
-        },
+        "problem_data": problem_data("stick_slip", float(len(SLIDES))),
         "solver_settings": {
             "model_part_name": "Structure",
             "domain_size": dimension,
@@ -312,16 +307,7 @@ def _parameters(
         },
         "processes": {
             "constraints_process_list": [
-                {
-                    "python_module": "assign_vector_variable_process",
-                    "kratos_module": "KratosMultiphysics",
-                    "Parameters": {
-                        "model_part_name": "Structure.Base",
-                        "variable_name": "DISPLACEMENT",
-                        "constrained": [True, True, True],
-                        "value": [0.0, 0.0, 0.0],
-                    },
-                },
+                hold_displacement("Base", [True, True, True], [0.0, 0.0, 0.0]),
                 {
                     "python_module": "assign_scalar_variable_process",
                     "kratos_module": "KratosMultiphysics",
@@ -350,30 +336,13 @@ def _parameters(
                 else []
             ),
             "loads_process_list": [
-                {
-                    "python_module": "assign_vector_by_direction_to_condition_process",
-                    "kratos_module": "KratosMultiphysics",
-                    "Parameters": {
-                        "model_part_name": "Structure.Top_Load",
-                        "variable_name": "SURFACE_LOAD" if dimension == 3 else "LINE_LOAD",
-                        "modulus": PRESSURE,
-                        "direction": [0.0, 0.0, -1.0] if dimension == 3 else [0.0, -1.0, 0.0],
-                        "interval": [0.0, "End"],
-                    },
-                }
+                top_load(
+                    "SURFACE_LOAD" if dimension == 3 else "LINE_LOAD",
+                    PRESSURE,
+                    [0.0, 0.0, -1.0] if dimension == 3 else [0.0, -1.0, 0.0],
+                )
             ],
-            "contact_process_list": [
-                {
-                    "python_module": process,
-                    "kratos_module": "KratosMultiphysics.ContactStructuralMechanicsApplication",
-                    "Parameters": {
-                        "model_part_name": "Structure",
-                        "contact_model_part": {"0": ["Contact_Slave", "Contact_Master"]},
-                        "assume_master_slave": {"0": ["Contact_Slave"]},
-                        "contact_type": contact_type,
-                    },
-                }
-            ],
+            "contact_process_list": [contact_process(process, contact_type)],
         },
         "output_processes": {},
     }

@@ -17,6 +17,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from contact_cases import contact_process, problem_data, roller, static_contact_solver, top_load
 from patch_meshes import Mdpa, box, faces_on, quad_block
 
 import contact_app as ca
@@ -26,20 +27,6 @@ from contact_app.cli import main as cli_main
 from contact_app.parameters import Parameters
 
 PRESSURE = 10.0
-
-
-def _fix(part: str, axes: tuple[int, ...]) -> dict:
-    constrained = [axis in axes for axis in range(3)]
-    return {
-        "python_module": "assign_vector_variable_process",
-        "kratos_module": "KratosMultiphysics",
-        "Parameters": {
-            "model_part_name": f"Structure.{part}",
-            "variable_name": "DISPLACEMENT",
-            "constrained": constrained,
-            "value": [0.0 if fixed else None for fixed in constrained],
-        },
-    }
 
 
 def write_case(directory: Path, depth: float, dimension: int) -> Path:
@@ -62,10 +49,10 @@ def write_case(directory: Path, depth: float, dimension: int) -> Path:
     mesh.add_part("Contact_Slave", upper.where(axis, 0))
     mesh.add_part("Contact_Master", lower.where(axis, -1))
     mesh.add_part("Roller_X", lower.where(0, 0) + upper.where(0, 0))
-    constraints = [_fix("Roller_X", (0,)), _fix("Base", (0, 1, 2))]
+    constraints = [roller("Roller_X", (0,)), roller("Base", (0, 1, 2))]
     if dimension == 3:
         mesh.add_part("Roller_Y", lower.where(1, 0) + upper.where(1, 0))
-        constraints.append(_fix("Roller_Y", (1,)))
+        constraints.append(roller("Roller_Y", (1,)))
     mesh.write(directory / "case.mdpa")
     variables = {"YOUNG_MODULUS": 1000.0, "POISSON_RATIO": 0.3, "DENSITY": 1.0}
     materials = [
@@ -80,61 +67,25 @@ def write_case(directory: Path, depth: float, dimension: int) -> Path:
     direction = [0.0, 0.0, 0.0]
     direction[axis] = -1.0
     parameters = {
-        "problem_data": {
-            "problem_name": "penetration",
-            "parallel_type": "OpenMP",
-            "start_time": 0.0,
-            "end_time": 1.0,
-            "echo_level": 0,
-        },
-        "solver_settings": {
-            "model_part_name": "Structure",
-            "domain_size": dimension,
-            "solver_type": "Static",
-            "echo_level": 0,
-            "analysis_type": "non_linear",
-            "model_import_settings": {
-                "input_type": "mdpa",
-                "input_filename": str(directory / "case"),
-            },
-            "material_import_settings": {"materials_filename": str(directory / "materials.json")},
-            "contact_settings": {"mortar_type": "ALMContactFrictionless"},
-            "time_stepping": {"time_step": 1.0},
-            "convergence_criterion": "contact_residual_criterion",
-            "max_iteration": 30,
-            "residual_relative_tolerance": 1e-10,
-            "residual_absolute_tolerance": 1e-12,
-            "displacement_relative_tolerance": 1e-10,
-            "displacement_absolute_tolerance": 1e-12,
-            "linear_solver_settings": {"solver_type": "skyline_lu_factorization"},
-        },
+        "problem_data": problem_data("penetration", 1.0),
+        "solver_settings": static_contact_solver(
+            directory,
+            "case",
+            dimension,
+            "ALMContactFrictionless",
+            max_iteration=30,
+            residual_relative_tolerance=1e-10,
+            residual_absolute_tolerance=1e-12,
+            displacement_relative_tolerance=1e-10,
+            displacement_absolute_tolerance=1e-12,
+            linear_solver_settings={"solver_type": "skyline_lu_factorization"},
+        ),
         "processes": {
             "constraints_process_list": constraints,
             "loads_process_list": [
-                {
-                    "python_module": "assign_vector_by_direction_to_condition_process",
-                    "kratos_module": "KratosMultiphysics",
-                    "Parameters": {
-                        "model_part_name": "Structure.Top_Load",
-                        "variable_name": "LINE_LOAD" if dimension == 2 else "SURFACE_LOAD",
-                        "modulus": PRESSURE,
-                        "direction": direction,
-                        "interval": [0.0, "End"],
-                    },
-                }
+                top_load("LINE_LOAD" if dimension == 2 else "SURFACE_LOAD", PRESSURE, direction)
             ],
-            "contact_process_list": [
-                {
-                    "python_module": "alm_contact_process",
-                    "kratos_module": "KratosMultiphysics.ContactStructuralMechanicsApplication",
-                    "Parameters": {
-                        "model_part_name": "Structure",
-                        "contact_model_part": {"0": ["Contact_Slave", "Contact_Master"]},
-                        "assume_master_slave": {"0": ["Contact_Slave"]},
-                        "contact_type": "Frictionless",
-                    },
-                }
-            ],
+            "contact_process_list": [contact_process("alm_contact_process", "Frictionless")],
         },
         "output_processes": {},
     }

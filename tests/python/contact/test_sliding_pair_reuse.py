@@ -24,6 +24,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from contact_cases import contact_process, hold_displacement, problem_data, static_contact_solver
 from patch_meshes import Mdpa, box
 
 import contact_app as ca
@@ -73,63 +74,28 @@ def _write_case(directory: Path) -> None:
 
 
 def _fix(part: str, value: list) -> dict:
-    return {
-        "python_module": "assign_vector_variable_process",
-        "kratos_module": "KratosMultiphysics",
-        "Parameters": {
-            "model_part_name": f"Structure.{part}",
-            "variable_name": "DISPLACEMENT",
-            "constrained": [True, True, True],
-            "value": value,
-            "interval": [0.0, "End"],
-        },
-    }
+    return hold_displacement(part, [True, True, True], value, interval=[0.0, "End"])
 
 
 def _parameters(directory: Path, mortar_type: str) -> dict:
     return {
-        "problem_data": {
-            "problem_name": "sliding",
-            "parallel_type": "OpenMP",
-            "start_time": 0.0,
-            "end_time": float(STEPS),
-            "echo_level": 0,
-        },
-        "solver_settings": {
-            "model_part_name": "Structure",
-            "domain_size": 3,
-            "solver_type": "Static",
-            "echo_level": 0,
-            "analysis_type": "non_linear",
-            "model_import_settings": {
-                "input_type": "mdpa",
-                "input_filename": str(directory / "sliding"),
-            },
-            "material_import_settings": {"materials_filename": str(directory / "materials.json")},
-            "contact_settings": {"mortar_type": mortar_type},
-            "time_stepping": {"time_step": 1.0},
-            "convergence_criterion": "contact_residual_criterion",
-            "max_iteration": 20,
-        },
+        "problem_data": problem_data("sliding", float(STEPS)),
+        "solver_settings": static_contact_solver(
+            directory, "sliding", 3, mortar_type, max_iteration=20
+        ),
         "processes": {
             "constraints_process_list": [
                 _fix("Base_Bottom", [0.0, 0.0, 0.0]),
                 _fix("Block_Top", [f"{SLIDE} * (t - 1)", 0.0, -PRESS]),
             ],
             "contact_process_list": [
-                {
-                    "python_module": "alm_contact_process",
-                    "kratos_module": "KratosMultiphysics.ContactStructuralMechanicsApplication",
-                    "Parameters": {
-                        "model_part_name": "Structure",
-                        "contact_model_part": {"0": ["Contact_Slave", "Contact_Master"]},
-                        "assume_master_slave": {"0": ["Contact_Slave"]},
-                        "contact_type": MORTAR_TYPES[mortar_type],
-                        # Every master face within the radius, also the ones the face has not
-                        # reached yet (the OBB filter keeps only those its box touches).
-                        "search_parameters": {"type_search": "in_radius"},
-                    },
-                }
+                contact_process(
+                    "alm_contact_process",
+                    MORTAR_TYPES[mortar_type],
+                    # Every master face within the radius, also the ones the face has not
+                    # reached yet (the OBB filter keeps only those its box touches).
+                    search_parameters={"type_search": "in_radius"},
+                )
             ],
         },
         "output_processes": {},
