@@ -36,6 +36,17 @@ def _plate(model: ca.Model, law: str = "LinearElasticPlaneStress2DLaw") -> ca.Mo
     return mp
 
 
+def _clamp_and_pull(mp: ca.ModelPart, displacement: float) -> None:
+    """Clamp the edge x = 0 and prescribe u_x = ``displacement`` on the edge x = 2."""
+    for node in mp.Nodes:
+        if node.X0 == 0.0:
+            node.Fix(ca.DISPLACEMENT_X)
+            node.Fix(ca.DISPLACEMENT_Y)
+        if node.X0 == 2.0:
+            node.Fix(ca.DISPLACEMENT_X)
+            node.SetSolutionStepValue(ca.DISPLACEMENT_X, 0, displacement)
+
+
 def _newton(
     mp: ca.ModelPart, builder: str = "block", max_iteration: int = 10
 ) -> ca.SolvingStrategy:
@@ -85,13 +96,7 @@ def test_strategy_uniaxial_patch_reproduces_uniform_stress(builder: str) -> None
 def test_strategy_reports_a_step_that_does_not_converge() -> None:
     model = ca.Model()
     mp = _plate(model, "HyperElasticPlaneStrain2DLaw")
-    for node in mp.Nodes:
-        if node.X0 == 0.0:
-            node.Fix(ca.DISPLACEMENT_X)
-            node.Fix(ca.DISPLACEMENT_Y)
-        if node.X0 == 2.0:
-            node.Fix(ca.DISPLACEMENT_X)
-            node.SetSolutionStepValue(ca.DISPLACEMENT_X, 0, 0.5)
+    _clamp_and_pull(mp, 0.5)
     strategy = _newton(mp, max_iteration=1)
     assert not strategy.Solve()
     assert not strategy.IsConverged()
@@ -127,13 +132,7 @@ def test_bossak_scheme_checks_its_parameters() -> None:
 def test_strategy_echo_prints_the_iterations(capfd: pytest.CaptureFixture[str]) -> None:
     model = ca.Model()
     mp = _plate(model)
-    for node in mp.Nodes:
-        if node.X0 == 0.0:
-            node.Fix(ca.DISPLACEMENT_X)
-            node.Fix(ca.DISPLACEMENT_Y)
-        if node.X0 == 2.0:
-            node.Fix(ca.DISPLACEMENT_X)
-            node.SetSolutionStepValue(ca.DISPLACEMENT_X, 0, 1.0e-3)
+    _clamp_and_pull(mp, 1.0e-3)
     strategy = _newton(mp)
     strategy.SetEchoLevel(2)
     assert strategy.Solve()
