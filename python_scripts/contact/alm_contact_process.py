@@ -208,6 +208,14 @@ class ALMContactProcess(SearchBaseProcess):
             if self.axisymmetric and not properties.Has(ca.THICKNESS):
                 properties[ca.THICKNESS] = 1.0
 
+    def _estimate_penalty(self, alm: Parameters) -> None:
+        """Compute INITIAL_PENALTY and SCALE_FACTOR from the stiffness of the contact part."""
+        _core.ALMVariablesCalculationProcess(
+            self.contact_model_part,
+            stiffness_factor=alm["stiffness_factor"].GetDouble(),
+            penalty_scale_factor=alm["penalty_scale_factor"].GetDouble(),
+        ).Execute()
+
     def _initialize_problem_parameters(self) -> None:
         info = self.main_model_part.ProcessInfo
         alm = self.settings["advance_ALM_parameters"]
@@ -215,11 +223,7 @@ class ALMContactProcess(SearchBaseProcess):
             info[ca.INITIAL_PENALTY] = alm["penalty"].GetDouble()
             info[ca.SCALE_FACTOR] = alm["scale_factor"].GetDouble()
         else:
-            _core.ALMVariablesCalculationProcess(
-                self.contact_model_part,
-                stiffness_factor=alm["stiffness_factor"].GetDouble(),
-                penalty_scale_factor=alm["penalty_scale_factor"].GetDouble(),
-            ).Execute()
+            self._estimate_penalty(alm)
             if not alm["use_scale_factor"].GetBool():
                 info[ca.SCALE_FACTOR] = 1.0
         for variable in (ca.INITIAL_PENALTY, ca.SCALE_FACTOR):

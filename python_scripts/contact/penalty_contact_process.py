@@ -12,7 +12,6 @@ import sys
 from typing import Any
 
 import contact_app as ca
-from contact_app import _core
 from contact_app.parameters import Parameters
 
 from .alm_contact_process import ALMContactProcess, alm_defaults
@@ -53,11 +52,7 @@ class PenaltyContactProcess(ALMContactProcess):
         if alm["manual_ALM"].GetBool():
             info[ca.INITIAL_PENALTY] = alm["penalty"].GetDouble()
         else:
-            _core.ALMVariablesCalculationProcess(
-                self.contact_model_part,
-                stiffness_factor=alm["stiffness_factor"].GetDouble(),
-                penalty_scale_factor=alm["penalty_scale_factor"].GetDouble(),
-            ).Execute()
+            self._estimate_penalty(alm)
             info[ca.INITIAL_PENALTY] = AUTOMATIC_PENALTY_FACTOR * info[ca.INITIAL_PENALTY]
         if info[ca.INITIAL_PENALTY] < sys.float_info.epsilon:
             info[ca.INITIAL_PENALTY] = FALLBACK_PENALTY
