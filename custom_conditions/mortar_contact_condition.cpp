@@ -214,17 +214,17 @@ void MORTAR_CLASS::RecordForcePerNormal(const NodeCoordinates<double, TDim, TNS>
                                         const NodeCoordinates<double, TDim, TNM>& x2,
                                         const NodeCoordinates<double, TDim, TNS>& normals,
                                         const MultiplierVector& lambda,
-                                        const MortarIntegrator<TDim, TNS, TNM, Dual<NumCoordinateDofs>>& integrator,
+                                        const MortarIntegrator<TDim, TNS, TNM, double>& integrator,
                                         const ProcessInfo& rCurrentProcessInfo) {
     // The normals take the first d n_s derivative slots of the AD types the tangent already uses (d n_s ≤ d(n_s + n_m)
-    // ≤ MatrixSize), so this pass instantiates nothing new.
+    // ≤ MatrixSize), so this pass instantiates no new AD type. Of the pair's operators only M reads the nodal normals
+    // (through the projection onto the master); the rest is integrated in double.
     using Coordinate = Dual<NumCoordinateDofs>;
     constexpr int normal_dofs = TDim * TNS;
     const auto seeded = Seed<NumCoordinateDofs>(normals, 0);
-    const SpatialVector<Coordinate, TDim> center = slave_normal.template cast<Coordinate>();
-    const NodeCoordinates<Coordinate, TDim, TNS> slave = x1.template cast<Coordinate>();
-    const NodeCoordinates<Coordinate, TDim, TNM> master = x2.template cast<Coordinate>();
-    const auto pair = IntegrateMortarPair<TDim, TNS, TNM>(integrator, slave, center, master, seeded, true);
+    Eigen::Matrix<Coordinate, TNS, TNM> master_operator;
+    const auto pair = IntegrateMortarPairOverNormals<TDim, TNS, TNM>(integrator, x1, slave_normal, x2, seeded, true,
+                                                                     master_operator);
     if (!pair.used) return;
     const auto widen = [](const auto& m) {
         Eigen::Matrix<ADScalar, std::decay_t<decltype(m)>::RowsAtCompileTime, std::decay_t<decltype(m)>::ColsAtCompileTime>
@@ -237,8 +237,8 @@ void MORTAR_CLASS::RecordForcePerNormal(const NodeCoordinates<double, TDim, TNS>
     state.x1 = x1.template cast<ADScalar>();
     state.x2 = x2.template cast<ADScalar>();
     state.normals = widen(seeded);
-    state.operators.D = widen(pair.operators.D);
-    state.operators.M = widen(pair.operators.M);
+    state.operators.D = pair.operators.D.template cast<ADScalar>();
+    state.operators.M = widen(master_operator);
     for (int i = 0; i < NumMultipliers; ++i) state.multipliers[i] = ADScalar(lambda[i]);
     LocalVector<ADScalar> rhs;
     for (int i = 0; i < MatrixSize; ++i) rhs[i] = ADScalar(0.0);
@@ -348,7 +348,9 @@ void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Pr
     operator_values.M = Values(pair.operators.M);
     InitializeResidual(operator_values, rCurrentProcessInfo);
     // Before the main pass: a family that records coupling terms in its AD residual keeps the main pass's.
-    if (normals_follow) RecordForcePerNormal(x1, slave_normal, x2, normals, lambda, integrator, rCurrentProcessInfo);
+    if (normals_follow)
+        RecordForcePerNormal(x1, slave_normal, x2, normals, lambda,
+                             MortarIntegrator<TDim, TNS, TNM, double>(integration, segmentation), rCurrentProcessInfo);
     LocalVector<ADScalar> rhs;
     for (int i = 0; i < MatrixSize; ++i) rhs[i] = ADScalar(0.0);
     AddResidual(state, rCurrentProcessInfo, rhs);

@@ -145,13 +145,13 @@ private:
     Matrix mForcePerNormal;
 
     void CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const ProcessInfo& rCurrentProcessInfo);
-    /// The second AD pass of a tangent evaluation whose nodal normals follow the iterate: the same integration and
-    /// residual with the normals seeded (coordinates and multipliers constant) into mForcePerNormal.
+    /// The second AD pass of a tangent evaluation whose nodal normals follow the iterate: the residual with the normals
+    /// seeded (coordinates and multipliers constant; M the only operator that reads them) into mForcePerNormal.
     void RecordForcePerNormal(const NodeCoordinates<double, TDim, TNumNodes>& x1,
                               const SpatialVector<double, TDim>& slave_normal,
                               const NodeCoordinates<double, TDim, TNumNodesMaster>& x2,
                               const NodeCoordinates<double, TDim, TNumNodes>& normals, const MultiplierVector& lambda,
-                              const MortarIntegrator<TDim, TNumNodes, TNumNodesMaster, Dual<NumCoordinateDofs>>& integrator,
+                              const MortarIntegrator<TDim, TNumNodes, TNumNodesMaster, double>& integrator,
                               const ProcessInfo& rCurrentProcessInfo);
     /// The InternalError raised by the methods only the families implement.
     InternalError NotInBase(const char* method) const;

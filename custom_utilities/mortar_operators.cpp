@@ -140,6 +140,29 @@ typename MortarIntegrator<TDim, TNS, TNM, T>::Operators MortarIntegrator<TDim, T
     return operators;
 }
 
+namespace {
+
+/// IntegrateMortarPair, keeping the Gauss points in @p points.
+template <int TDim, int TNS, int TNM, class T, class TNormal>
+MortarPairIntegration<T, TDim, TNS, TNM> IntegrateMortarPairAt(
+    const MortarIntegrator<TDim, TNS, TNM, T>& integrator, const NodeCoordinates<T, TDim, TNS>& slave,
+    const SpatialVector<TNormal, TDim>& slave_normal, const NodeCoordinates<T, TDim, TNM>& master,
+    const NodeCoordinates<TNormal, TDim, TNS>& nodal_normals, bool dual_lm,
+    std::vector<typename MortarIntegrator<TDim, TNS, TNM, T>::GaussPoint>& points) {
+    MortarPairIntegration<T, TDim, TNS, TNM> result;
+    const auto& segmentation = integrator.GetSegmentation();
+    if (!segmentation.ComputeCells(slave, slave_normal, master, result.cells)) return result;
+    result.area = segmentation.TotalArea(slave, result.cells);
+    result.used = IsMortarPairUsed(Value(result.area), FaceMeasure<TDim, TNS>(Values(slave)));
+    if (!result.used) return result;
+    integrator.ComputeGaussPoints(slave, slave_normal, master, nodal_normals, result.cells, points);
+    if (dual_lm) result.dual = integrator.ComputeDualBasis(points);
+    result.operators = integrator.ComputeOperators(points, result.dual);
+    return result;
+}
+
+}  // namespace
+
 template <int TDim, int TNS, int TNM, class T, class TNormal>
 MortarPairIntegration<T, TDim, TNS, TNM> IntegrateMortarPair(const MortarIntegrator<TDim, TNS, TNM, T>& integrator,
                                                            const NodeCoordinates<T, TDim, TNS>& slave,
@@ -147,20 +170,38 @@ MortarPairIntegration<T, TDim, TNS, TNM> IntegrateMortarPair(const MortarIntegra
                                                            const NodeCoordinates<T, TDim, TNM>& master,
                                                            const NodeCoordinates<TNormal, TDim, TNS>& nodal_normals,
                                                            bool dual_lm) {
-    MortarPairIntegration<T, TDim, TNS, TNM> result;
-    const auto& segmentation = integrator.GetSegmentation();
-    if (!segmentation.ComputeCells(slave, slave_normal, master, result.cells)) return result;
-    result.area = segmentation.TotalArea(slave, result.cells);
-    result.used = IsMortarPairUsed(Value(result.area), FaceMeasure<TDim, TNS>(Values(slave)));
-    if (!result.used) return result;
     std::vector<typename MortarIntegrator<TDim, TNS, TNM, T>::GaussPoint> points;
-    integrator.ComputeGaussPoints(slave, slave_normal, master, nodal_normals, result.cells, points);
-    if (dual_lm) result.dual = integrator.ComputeDualBasis(points);
-    result.operators = integrator.ComputeOperators(points, result.dual);
-    return result;
+    return IntegrateMortarPairAt(integrator, slave, slave_normal, master, nodal_normals, dual_lm, points);
 }
 
-// -- Explicit instantiations: the registered pairs × {double, Dual<d(n_s+n_m)>} × normal scalar --
+template <int TDim, int TNS, int TNM, class TNormal>
+MortarPairIntegration<double, TDim, TNS, TNM> IntegrateMortarPairOverNormals(
+    const MortarIntegrator<TDim, TNS, TNM, double>& integrator, const NodeCoordinates<double, TDim, TNS>& slave,
+    const SpatialVector<double, TDim>& slave_normal, const NodeCoordinates<double, TDim, TNM>& master,
+    const NodeCoordinates<TNormal, TDim, TNS>& nodal_normals, bool dual_lm, Eigen::Matrix<TNormal, TNS, TNM>& rM) {
+    std::vector<typename MortarIntegrator<TDim, TNS, TNM, double>::GaussPoint> points;
+    const NodeCoordinates<double, TDim, TNS> normal_values = Values(nodal_normals);
+    const auto pair = IntegrateMortarPairAt(integrator, slave, slave_normal, master, normal_values, dual_lm, points);
+    rM.setConstant(TNormal(0.0));
+    const NodeCoordinates<TNormal, TDim, TNM> face = master.template cast<TNormal>();
+    for (const auto& p : points) {
+        const SpatialVector<TNormal, TDim> interpolated = nodal_normals.transpose() * p.N1.template cast<TNormal>();
+        const SpatialVector<TNormal, TDim> normal = interpolated / detail::Norm<TNormal>(interpolated);
+        Eigen::Matrix<TNormal, TDim - 1, 1> eta;
+        // Succeeds: it decides on the values, as the projection in double that kept this point.
+        if (!detail::ProjectAlongDirection<TNM, TDim, TNormal>(face, p.x1.template cast<TNormal>(), normal, eta))
+            continue;
+        const Eigen::Matrix<double, TNS, 1> phi_w =
+            (pair.dual.dual ? Eigen::Matrix<double, TNS, 1>(pair.dual.Ae * p.N1) : p.N1) * p.weight;
+        const Eigen::Matrix<TNormal, TNM, 1> n2 = detail::FaceShapeFunctions<TNM, TNormal>(eta);
+        for (int j = 0; j < TNS; ++j)
+            for (int l = 0; l < TNM; ++l) rM(j, l) += phi_w[j] * n2[l];
+    }
+    return pair;
+}
+
+// -- Explicit instantiations: the registered pairs × {double, Dual<d(n_s+n_m)>} × normal scalar, and the pair with M
+// over the nodal normals in Dual<d(n_s+n_m)> (the normal pass of the conditions) --
 #define CONTACT_APP_INSTANTIATE_INTEGRATION_N(D, NS, NM, T, TN)                                                \
     template void MortarIntegrator<D, NS, NM, T>::ComputeGaussPoints<TN>(                                     \
         const NodeCoordinates<T, D, NS>&, const SpatialVector<TN, D>&, const NodeCoordinates<T, D, NM>&,      \
@@ -173,7 +214,11 @@ MortarPairIntegration<T, TDim, TNS, TNM> IntegrateMortarPair(const MortarIntegra
     template class MortarIntegrator<D, NS, NM, Dual<D*(NS + NM)>>;                                             \
     CONTACT_APP_INSTANTIATE_INTEGRATION_N(D, NS, NM, double, double)                                           \
     CONTACT_APP_INSTANTIATE_INTEGRATION_N(D, NS, NM, Dual<D*(NS + NM)>, double)                                \
-    CONTACT_APP_INSTANTIATE_INTEGRATION_N(D, NS, NM, Dual<D*(NS + NM)>, Dual<D*(NS + NM)>)
+    CONTACT_APP_INSTANTIATE_INTEGRATION_N(D, NS, NM, Dual<D*(NS + NM)>, Dual<D*(NS + NM)>)                     \
+    template MortarPairIntegration<double, D, NS, NM> IntegrateMortarPairOverNormals<D, NS, NM, Dual<D*(NS + NM)>>( \
+        const MortarIntegrator<D, NS, NM, double>&, const NodeCoordinates<double, D, NS>&,                      \
+        const SpatialVector<double, D>&, const NodeCoordinates<double, D, NM>&,                                \
+        const NodeCoordinates<Dual<D*(NS + NM)>, D, NS>&, bool, Eigen::Matrix<Dual<D*(NS + NM)>, NS, NM>&);
 CONTACT_APP_FOR_EACH_MORTAR_PAIR(CONTACT_APP_INSTANTIATE_INTEGRATION, ~)
 #undef CONTACT_APP_INSTANTIATE_INTEGRATION
 #undef CONTACT_APP_INSTANTIATE_INTEGRATION_N

@@ -99,4 +99,19 @@ MortarPairIntegration<T, TDim, TNumNodes, TNumNodesMaster> IntegrateMortarPair(
     const NodeCoordinates<T, TDim, TNumNodesMaster>& master,
     const NodeCoordinates<TNormal, TDim, TNumNodes>& nodal_normals, bool dual_lm);
 
+/// @brief IntegrateMortarPair in double, and M as a function of the slave nodal normals alone, the coordinates held:
+/// M_jl = Σ w Φ_j N2_l(η) with x2(η) − s ν = x1 and ν = Σ N1_i n_i / |Σ N1_i n_i|. The cells, w, N1, the dual basis and
+/// D read only the slave face and its face-centre normal; only the projection onto the master is repeated in TNormal, a
+/// fraction of the cost of integrating the pair with the normals seeded (docs/theory/mortar.md §7 "Normals that follow
+/// the iterate").
+/// @param[in] nodal_normals n_s × d unit nodal NORMAL of the slave nodes, with the derivatives wanted
+/// @param[out] rM M in TNormal (zero when the pair is not used); the other arguments as for IntegrateMortarPair
+template <int TDim, int TNumNodes, int TNumNodesMaster, class TNormal>
+MortarPairIntegration<double, TDim, TNumNodes, TNumNodesMaster> IntegrateMortarPairOverNormals(
+    const MortarIntegrator<TDim, TNumNodes, TNumNodesMaster, double>& integrator,
+    const NodeCoordinates<double, TDim, TNumNodes>& slave, const SpatialVector<double, TDim>& slave_normal,
+    const NodeCoordinates<double, TDim, TNumNodesMaster>& master,
+    const NodeCoordinates<TNormal, TDim, TNumNodes>& nodal_normals, bool dual_lm,
+    Eigen::Matrix<TNormal, TNumNodes, TNumNodesMaster>& rM);
+
 }  // namespace contact_app

@@ -322,6 +322,64 @@ TYPED_TEST(MortarOperatorsTest, test_ad_derivatives_match_central_finite_differe
     }
 }
 
+// The normal pass of the conditions (docs/theory/mortar.md §7 "Normals that follow the iterate"): the pair integrated
+// in double, and M with its derivatives in the nodal normals, which only M reads. Values are those of IntegrateMortarPair,
+// derivatives its central differences in the normals (unnormalised, as ν normalises their interpolation).
+TYPED_TEST(MortarOperatorsTest, test_operators_over_the_nodal_normals_match_finite_differences) {
+    constexpr int D = TestFixture::D, NS = TestFixture::NS, N = TestFixture::N;
+    using AD = typename TestFixture::AD;
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<double> u(-0.2, 0.2);
+    const MortarIntegrator<D, NS, TestFixture::NM, double> integrator;
+    const auto integrate = [&](const auto& pair, const NodeCoordinates<double, D, NS>& normals) {
+        return IntegrateMortarPair(integrator, pair.slave, FaceCenterUnitNormal<D, NS, double>(pair.slave), pair.master,
+                                   normals, true);
+    };
+    int tested = 0;
+    double worst = 0.0;
+    for (int sample = 0; sample < 40 && tested < 10; ++sample) {
+        const auto pair = testing::MakeRandomPair<TypeParam>(rng, 0.4);
+        NodeCoordinates<double, D, NS> normals = FaceNodalUnitNormals<D, NS, double>(pair.slave);
+        for (int i = 0; i < NS; ++i) {  // nodal normals of a curved surface: each tilted off the face's
+            for (int c = 0; c < D; ++c) normals(i, c) += u(rng);
+            normals.row(i).normalize();
+        }
+        const auto reference = integrate(pair, normals);
+        if (!reference.used) continue;
+        Eigen::Matrix<AD, NS, TestFixture::NM> m;
+        const auto result = IntegrateMortarPairOverNormals(integrator, pair.slave,
+                                                           FaceCenterUnitNormal<D, NS, double>(pair.slave), pair.master,
+                                                           Seed<N>(normals, 0), true, m);
+        ASSERT_TRUE(result.used);
+        EXPECT_EQ(result.operators.D, reference.operators.D);
+        EXPECT_EQ(result.operators.M, reference.operators.M);
+        EXPECT_LT((Values(m) - reference.operators.M).cwiseAbs().maxCoeff(), 1e-15);
+        const double h = 1.0e-6;
+        double error = 0.0, scale = 0.0;
+        for (int q = 0; q < D * NS; ++q) {
+            auto plus = normals, minus = normals;
+            plus(q / D, q % D) += h;
+            minus(q / D, q % D) -= h;
+            const auto fd = ((integrate(pair, plus).operators.M - integrate(pair, minus).operators.M) / (2.0 * h)).eval();
+            for (int j = 0; j < NS; ++j)
+                for (int l = 0; l < TestFixture::NM; ++l) {
+                    error = std::max(error, std::abs(m(j, l).Derivatives()[q] - fd(j, l)));
+                    scale = std::max(scale, std::abs(fd(j, l)));
+                }
+            for (int q2 = D * NS; q2 < N; ++q2)  // the coordinates are held
+                for (int j = 0; j < NS; ++j)
+                    for (int l = 0; l < TestFixture::NM; ++l) EXPECT_EQ(m(j, l).Derivatives()[q2], 0.0);
+        }
+        EXPECT_GT(scale, 1e-4);  // M does move with the normals (by the gap times the tilt)
+        EXPECT_LT(error, 1e-6 * scale) << "sample " << sample;
+        worst = std::max(worst, error / scale);
+        ++tested;
+    }
+    EXPECT_GE(tested, 10);
+    std::printf("[ M over normals ] %s worst relative error %.3e over %d pairs\n",
+                testing::PairKindName::GetName<TypeParam>(0).c_str(), worst, tested);
+}
+
 }  // namespace
 }  // namespace contact_app
 
