@@ -113,12 +113,14 @@ bool InverseMap(const std::array<Vec2<T>, TNumNodes>& q, const Vec2<T>& p, Vec2<
     const auto shape = FaceShapeFunctions<TNumNodes, double>(xi0);
     const auto grad = FaceShapeGradients<TNumNodes, double>(xi0);
     Vec2<T> r = -p;
-    Eigen::Matrix<T, 2, 2> jac = Eigen::Matrix<T, 2, 2>::Zero();
+    Eigen::Matrix2d jac = Eigen::Matrix2d::Zero();
     for (int k = 0; k < TNumNodes; ++k) {
         r += shape[k] * q[k];
-        jac += q[k] * grad.row(k).template cast<T>();
+        jac += Values(q[k]) * grad.row(k);
     }
-    xi = xi0.template cast<T>() - jac.inverse() * r;
+    // As in ProjectAlongDirection: the residual is at round-off, so J in double gives the exact derivatives.
+    const Eigen::Matrix2d inverse = jac.inverse();
+    for (int i = 0; i < 2; ++i) xi[i] = xi0[i] - (inverse(i, 0) * r[0] + inverse(i, 1) * r[1]);
     return true;
 }
 
@@ -156,13 +158,19 @@ bool ProjectAlongDirection(const NodeCoordinates<T, TDim, TNumNodes>& face, cons
     }
     if (!converged) return false;
     const Eigen::Matrix<double, TDim - 1, 1> e0 = u.template head<TDim - 1>();
-    Eigen::Matrix<T, TDim, TDim> jac;
-    jac.template leftCols<TDim - 1>() = face.transpose() * FaceShapeGradients<TNumNodes, double>(e0).template cast<T>();
-    jac.col(TDim - 1) = -dir;
+    // The step in T: the residual's value is at round-off, so the step carries the exact derivatives −J⁻¹ ∂r (implicit
+    // function theorem) with J in double; inverting J in T would add only (∂J⁻¹) r, which is round-off.
+    Square jac;
+    jac.template leftCols<TDim - 1>() = Values(face).transpose() * FaceShapeGradients<TNumNodes, double>(e0);
+    jac.col(TDim - 1) = -dv;
+    const Square inverse = jac.inverse();
     const SpatialVector<T, TDim> r =
         face.transpose() * FaceShapeFunctions<TNumNodes, double>(e0).template cast<T>() - u[TDim - 1] * dir - x;
-    const SpatialVector<T, TDim> ut = u.template cast<T>() - jac.inverse() * r;
-    eta = ut.template head<TDim - 1>();
+    for (int i = 0; i < TDim - 1; ++i) {
+        T step = inverse(i, 0) * r[0];
+        for (int k = 1; k < TDim; ++k) step += inverse(i, k) * r[k];
+        eta[i] = u[i] - step;
+    }
     return true;
 }
 

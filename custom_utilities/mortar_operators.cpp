@@ -60,6 +60,7 @@ void MortarIntegrator<TDim, TNS, TNM, T>::ComputeGaussPoints(
     const MortarCells<T, TDim>& cells, std::vector<GaussPoint>& points) const {
     points.clear();
     const auto& rule = MortarCellGaussRule(TDim, mSettings.integration_order);
+    points.reserve(cells.size() * rule.size());
     const SpatialVector<T, TDim> n_slave = slave_normal.template cast<T>();
     const NodeCoordinates<T, TDim, TNS> normals = nodal_normals.template cast<T>();
     for (const auto& cell : cells) {
