@@ -19,7 +19,9 @@ Usage: ``python benchmarks/hertz_baseline.py [--example E] [--steps N] [--orderi
 default, ``--steps N``: the full load in N equal steps instead of the example's own time_step,
 ``--ordering amd,metis``: run every level once per fill-reducing ordering
 (linear_solver_settings.ordering; default: the example's own setting, "auto"), ``--solver
-umfpack,mumps``: and once per linear solver_type (default: the example's own). For hertz_3d a
+umfpack,mumps``: and once per linear solver_type (default: the example's own), ``--linear JSON``:
+these keys merged into every run's linear_solver_settings (e.g.
+``'{"reform_preconditioner_at_each_step": false}'``). For hertz_3d a
 fractional level is an intermediate mesh (``make_mesh.subdivision_factor``): ``--example
 hertz_3d 3.8`` has 2.8e5 displacement DoFs. ``--threads 1,2``: and once per OpenMP thread count of
 the assembly (OMP_NUM_THREADS; OpenBLAS held at OPENBLAS_NUM_THREADS, 1 unless set, so that only
@@ -50,6 +52,7 @@ def _measure(
     steps: int | None = None,
     ordering: str | None = None,
     solver: str | None = None,
+    linear: dict | None = None,
 ) -> dict:
     """Run one level of ``example`` in this process and return its figures."""
     folder = ROOT / "examples" / example
@@ -91,6 +94,7 @@ def _measure(
         parameters["solver_settings"]["linear_solver_settings"]["ordering"] = ordering
     if solver is not None:
         parameters["solver_settings"]["linear_solver_settings"]["solver_type"] = solver
+    parameters["solver_settings"]["linear_solver_settings"].update(linear or {})
     (workdir / "ProjectParameters.json").write_text(json.dumps(parameters, indent=1))
     make_mesh.write_mesh(workdir / f"{example}.msh", level)
     os.chdir(workdir)
@@ -138,6 +142,9 @@ def _measure(
         # Krylov solvers (solver_type amgcl / gmres): iterations of every solve of the run
         "krylov_iterations": [int(n) for n in solver.get("krylov_iterations", [])],
         "krylov_method": solver.get("krylov_method", ""),
+        "preconditioner_s": solver.get("preconditioner_seconds", 0.0),
+        "krylov_s": solver.get("krylov_seconds", 0.0),
+        "preconditioner_setups": solver.get("preconditioner_setups", 0),
         "cpu_s": sum(resource.getrusage(resource.RUSAGE_SELF)[:2]),
         "size_error": getattr(hertz, "a_error", getattr(hertz, "b_error", float("nan"))),
         "p0_error": hertz.p0_error,
@@ -157,12 +164,18 @@ def main(argv: list[str]) -> int:
     if argv and argv[0] == "--worker":
         job = json.loads(argv[1])
         figures = _measure(
-            job["example"], job["level"], job["steps"], job["ordering"], job["solver"]
+            job["example"],
+            job["level"],
+            job["steps"],
+            job["ordering"],
+            job["solver"],
+            job["linear"],
         )
         print(json.dumps(figures))
         return 0
     options: dict[str, str] = {}
-    while argv and argv[0] in ("--example", "--steps", "--ordering", "--solver", "--threads"):
+    keys = ("--example", "--steps", "--ordering", "--solver", "--threads", "--linear")
+    while argv and argv[0] in keys:
         if len(argv) < 2:
             print(f"{argv[0]} expects a value", file=sys.stderr)
             return 2
@@ -175,11 +188,12 @@ def main(argv: list[str]) -> int:
     orderings = options["ordering"].split(",") if "ordering" in options else [None]
     solvers = options["solver"].split(",") if "solver" in options else [None]
     thread_counts = options["threads"].split(",") if "threads" in options else [None]
+    linear = json.loads(options.get("linear", "{}"))
     levels = [float(a) if "." in a else int(a) for a in argv] or [1, 2, 3]
     OUT.mkdir(parents=True, exist_ok=True)
     rows = []
     jobs = [
-        {"example": example, "level": level, "steps": steps}
+        {"example": example, "level": level, "steps": steps, "linear": linear}
         | {"ordering": o, "solver": s, "threads": t}
         for level in levels
         for s in solvers
@@ -236,14 +250,16 @@ def main(argv: list[str]) -> int:
     krylov = [r for r in rows if r.get("krylov_iterations")]
     if krylov:
         print(
-            f"\n{'level':>5} {'DoFs':>7} {'solves':>6} {'Krylov its':>10} {'max':>5} "
-            + f"{'mean':>6}  method"
+            f"\n{'level':>5} {'DoFs':>7} {'solves':>6} {'PC set-ups':>10} {'Krylov its':>10} "
+            f"{'max':>5} {'mean':>6} {'set-up s':>8} {'its s':>7}  method"
         )
         for r in krylov:
             its = r["krylov_iterations"]
             print(
-                f"{r['level']:>5} {r['dofs_displacement']:>7} {len(its):>6} {sum(its):>10} "
-                f"{max(its):>5} {sum(its) / len(its):6.1f}  {r['krylov_method']}"
+                f"{r['level']:>5} {r['dofs_displacement']:>7} {len(its):>6} "
+                f"{r['preconditioner_setups'] or len(its):>10} {sum(its):>10} "
+                f"{max(its):>5} {sum(its) / len(its):6.1f} {r['preconditioner_s']:8.2f} "
+                f"{r['krylov_s']:7.2f}  {r['krylov_method']}"
             )
     if thread_counts != [None]:
         print(

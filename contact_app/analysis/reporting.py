@@ -125,7 +125,9 @@ def linear_solver_text(statistics: dict, *, largest: bool = True) -> str:
             f"{sum(iterations)} iterations (max {max(iterations)}, mean "
             f"{sum(iterations) / len(iterations):.1f}) to a relative residual of "
             f"{float(statistics.get('tolerance', 0.0)):.0e}, set-up "
-            f"{float(statistics.get('preconditioner_seconds', 0.0)):.3g} s, iterations "
+            f"{float(statistics.get('preconditioner_seconds', 0.0)):.3g} s "
+            f"({int(statistics.get('preconditioner_setups', len(iterations)))} preconditioner "
+            f"set-ups for {len(iterations)} solves), iterations "
             f"{float(statistics.get('krylov_seconds', 0.0)):.3g} s"
         )
         if int(statistics.get("near_null_space", 0)):

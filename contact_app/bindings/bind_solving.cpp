@@ -59,6 +59,7 @@ void BindLinearSolvers(py::module_& m) {
                 statistics["last_relative_residual"] = s.last_relative_residual;
                 statistics["tolerance"] = s.tolerance;
                 statistics["preconditioner_seconds"] = s.preconditioner_seconds;
+                statistics["preconditioner_setups"] = s.preconditioner_setups;
                 statistics["krylov_seconds"] = s.krylov_seconds;
                 statistics["ranks"] = s.ranks;
                 statistics["near_null_space"] = s.near_null_space;
@@ -71,7 +72,8 @@ void BindLinearSolvers(py::module_& m) {
             "not a condensing solver, 'yes' or 'no (why)'), interface_size and bulk_size of the last condensed solve, "
             "bulk_factorizations, condensed_solves, bulk_seconds and interface_seconds (wall); Krylov solvers: krylov "
             "(True), krylov_method, krylov_iterations (per solve of the run), last_relative_residual, tolerance, "
-            "preconditioner_seconds, krylov_seconds (wall), ranks (MPI) and near_null_space (rigid-body modes given).");
+            "preconditioner_seconds, preconditioner_setups (solves that set the preconditioner up), krylov_seconds "
+            "(wall), ranks (MPI) and near_null_space (rigid-body modes given).");
     py::class_<StaticCondensationSolver, LinearSolver, std::shared_ptr<StaticCondensationSolver>>(
         m, "StaticCondensationSolver",
         "Condenses a constant bulk onto the contact interface (linear_solver_settings.static_condensation).")
@@ -89,7 +91,7 @@ void BindLinearSolvers(py::module_& m) {
         [](const std::string& solver_type, double tolerance, int max_iteration, const std::string& ordering,
            const std::string& krylov_type, const std::string& preconditioner_type, const std::string& smoother_type,
            const std::string& coarsening_type, int gmres_krylov_space_dimension, int verbosity, int max_levels,
-           int coarse_enough, int pre_sweeps, int post_sweeps) {
+           int coarse_enough, int pre_sweeps, int post_sweeps, bool reform_preconditioner_at_each_step) {
             KrylovSettings krylov;
             krylov.krylov_type = krylov_type;
             krylov.preconditioner_type = preconditioner_type;
@@ -101,13 +103,14 @@ void BindLinearSolvers(py::module_& m) {
             krylov.coarse_enough = coarse_enough;
             krylov.pre_sweeps = pre_sweeps;
             krylov.post_sweeps = post_sweeps;
+            krylov.reform_preconditioner_at_each_step = reform_preconditioner_at_each_step;
             return CreateLinearSolver({solver_type, tolerance, max_iteration, ordering, krylov});
         },
         py::arg("solver_type") = "", py::arg("tolerance") = 1.0e-6, py::arg("max_iteration") = 1000,
         py::arg("ordering") = "auto", py::arg("krylov_type") = "", py::arg("preconditioner_type") = "",
         py::arg("smoother_type") = "", py::arg("coarsening_type") = "", py::arg("gmres_krylov_space_dimension") = 100,
         py::arg("verbosity") = 0, py::arg("max_levels") = -1, py::arg("coarse_enough") = 1000,
-        py::arg("pre_sweeps") = 1, py::arg("post_sweeps") = 1,
+        py::arg("pre_sweeps") = 1, py::arg("post_sweeps") = 1, py::arg("reform_preconditioner_at_each_step") = true,
         "Linear solver for a Kratos or contact_app solver_type name ('' = skyline_lu_factorization: UMFPACK "
         "or MUMPS by size); ordering (UMFPACK, MUMPS): 'auto', 'amd' or 'metis'; the other keywords are the "
         "amgcl keys of the PETSc Krylov solver (solver_type 'amgcl', 'gmres', 'petsc').");

@@ -76,6 +76,7 @@ KRYLOV_KEYS = (
     "coarse_enough",
     "pre_sweeps",
     "post_sweeps",
+    "reform_preconditioner_at_each_step",
 )
 #: Solvers of the iterative route: no static condensation under "auto", every ALM family condensed.
 ITERATIVE_SOLVERS = ("petsc",)
@@ -827,7 +828,13 @@ class MechanicalSolver:
         for key in KRYLOV_KEYS:
             if linear.Has(key):
                 value = linear[key]
-                krylov[key] = value.GetString() if value.IsString() else value.GetInt()
+                krylov[key] = (
+                    value.GetString()
+                    if value.IsString()
+                    else value.GetBool()
+                    if value.IsBool()
+                    else value.GetInt()
+                )
         return ca.CreateLinearSolver(solver_type, tolerance, max_iteration, ordering, **krylov)
 
     def _CreateBuilderAndSolver(self) -> Any:

@@ -44,6 +44,7 @@ struct LinearSolverStatistics {
     double last_relative_residual = 0.0;   ///< ‖b − Ax‖/‖b‖ of the last solve
     double tolerance = 0.0;
     double preconditioner_seconds = 0.0;   ///< wall time of all matrix distributions and preconditioner set-ups
+    std::size_t preconditioner_setups = 0; ///< solves whose preconditioner was set up (the others reused one)
     double krylov_seconds = 0.0;           ///< wall time of all Krylov iterations
     int ranks = 0;                         ///< MPI ranks of the last solve (0 = not an MPI solver)
     std::size_t near_null_space = 0;       ///< near-null-space vectors given to the AMG (rigid-body modes)

@@ -13,7 +13,7 @@
 namespace contact_app::petsc_plugin {
 
 /// Version of this interface; the plugin refuses another.
-inline constexpr int kInterfaceVersion = 1;
+inline constexpr int kInterfaceVersion = 2;
 
 /// What the Krylov solver is asked to do (the Kratos amgcl keys, mapped by PetscKrylovSolver).
 struct Options {
@@ -33,6 +33,13 @@ struct Options {
     int aggregation_smoothing = 1;  ///< GAMG prolongator smoothing steps (0 = plain aggregation)
     int verbosity = 0;          ///< 0 silent, 1 one line per solve, 2 the residual history
     const char* extra_options = "";  ///< PETSc options string applied last (CONTACT_APP_PETSC_OPTIONS)
+    /// 1: keep the preconditioner while the pattern stays (Kratos reform_preconditioner_at_each_step false);
+    /// the Mat and KSP are kept either way.
+    int reuse_preconditioner = 0;
+    /// 1: a GAMG set-up on new values of the same pattern keeps the prolongators (PCGAMGSetReuseInterpolation)
+    /// and recomputes only the coarse operators and smoothers. A solve that fails with what was kept (either
+    /// reuse) is redone after a complete set-up.
+    int reuse_interpolation = 0;
 };
 
 /// One solve. Rank 0 passes the system; the other ranks pass size = -1 (they receive their rows from rank 0).
@@ -62,6 +69,9 @@ struct Result {
     double solve_seconds = 0.0;      ///< Krylov iterations (wall)
     double preconditioner_memory = 0.0;  ///< bytes PETSc holds after the set-up (PetscMallocGetCurrentUsage), -1 unknown
     int levels = 0;                  ///< multigrid levels (0 = not a multigrid)
+    int preconditioner_set_up = 0;   ///< 1 if the preconditioner was set up for this solve, 0 if reused
+    int pattern_reused = 0;          ///< 1 if the Mat and KSP of the previous solve were kept (same pattern)
+    int retried = 0;                 ///< 1 if the reused preconditioner failed and the solve was redone after a set-up
     char reason[96] = {};            ///< KSPConvergedReason as text
     char description[160] = {};      ///< "gmres(100) + gamg (chebyshev/jacobi), 4 levels"
 };
@@ -71,7 +81,9 @@ class Backend {
 public:
     virtual ~Backend() = default;
     /// Solves; the solution (size entries) is written to @p x on every rank. Returns 0, or a PETSc/MPI
-    /// error code with @p message filled.
+    /// error code with @p message filled. The Mat, Vec and KSP objects are kept for the next solve while the
+    /// pattern stays (size, block size, row_start, columns, near-null-space count, preconditioner_values given
+    /// or not; rank 0 decides): only the values are then copied in.
     virtual int Solve(const System& system, double* x, Result* result, char* message, std::size_t message_size) = 0;
     /// This process's rank and the number of ranks of PETSC_COMM_WORLD.
     virtual int Rank() const = 0;

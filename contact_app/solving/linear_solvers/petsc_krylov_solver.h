@@ -25,6 +25,9 @@ struct KrylovSettings {
     int coarse_enough = 1000;
     int pre_sweeps = 1;
     int post_sweeps = 1;
+    /// false: the preconditioner is set up on the first solve and again only when the sparsity pattern
+    /// changes (or a solve with it fails); true: on every solve.
+    bool reform_preconditioner_at_each_step = true;
 };
 
 /// The plugin options these settings map to. @throws InputError naming the linear_solver_settings key of an

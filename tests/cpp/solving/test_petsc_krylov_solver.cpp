@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The PETSc Krylov + AMG solver (solver_type "amgcl" / "gmres"): a nodal 3-component system with its rigid-body
-// near-null space, the mapping of the amgcl keys, a not-converged solve. Skipped, naming the package, when this
+// near-null space, the mapping of the amgcl keys, the preconditioner kept or set up again
+// (reform_preconditioner_at_each_step), a not-converged solve. Skipped, naming the package, when this
 // build has no PETSc.
 #include <gtest/gtest.h>
 
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -105,6 +107,97 @@ TEST(PetscKrylovSolver, EveryKrylovAndSmootherChoiceSolves) {
                 }
                 EXPECT_LT((x - expected).norm() / expected.norm(), 1e-7);
             }
+}
+
+/// The grid system with the values of a later Newton iteration: same pattern, the diagonal of every
+/// third node stiffened by @p factor.
+SparseMatrixType Stiffened(const SparseMatrixType& matrix, double factor) {
+    SparseMatrixType changed = matrix;
+    for (int row = 0; row < changed.rows(); row += 9) changed.coeffRef(row, row) *= factor;
+    return changed;
+}
+
+/// Solves A x = A x* with @p solver; the error of x against x*.
+double SolveError(LinearSolver& solver, const UnknownLayout& layout, SparseMatrixType& matrix) {
+    const SystemVectorType expected = SystemVectorType::LinSpaced(matrix.rows(), 1.0, 2.0);
+    SystemVectorType b = matrix * expected, x;
+    solver.ProvideUnknownLayout(layout);
+    solver.Solve(matrix, x, b);
+    return (x - expected).norm() / expected.norm();
+}
+
+/// A GMRES + GAMG solver ("amgcl").
+LinearSolver::Pointer AmgclSolver(bool reform, double tolerance = 1e-10, int max_iteration = 1000) {
+    LinearSolverSettings settings;
+    settings.solver_type = "amgcl";
+    settings.tolerance = tolerance;
+    settings.max_iteration = max_iteration;
+    settings.krylov.reform_preconditioner_at_each_step = reform;
+    return CreateLinearSolver(settings);
+}
+
+/// Solves the grid system stiffened by each factor in turn (one pattern), each to 1e-8.
+void SolveStiffened(LinearSolver& solver, const NodalSystem& system, std::initializer_list<double> factors) {
+    for (const double factor : factors) {
+        SparseMatrixType matrix = Stiffened(system.matrix, factor);
+        EXPECT_LT(SolveError(solver, system.layout, matrix), 1e-8) << factor;
+    }
+}
+
+TEST(PetscKrylovSolver, WithoutReformThePreconditionerIsSetUpOncePerPattern) {
+    SKIP_WITHOUT_PETSC();
+    NodalSystem system = GridSystem(10);
+    auto solver = AmgclSolver(false);
+    SolveStiffened(*solver, system, {1.0, 1.5, 3.0, 0.7});
+    LinearSolverStatistics statistics = solver->Statistics();
+    ASSERT_EQ(statistics.krylov_iterations.size(), 4u);
+    EXPECT_EQ(statistics.preconditioner_setups, 1u);
+    EXPECT_LE(statistics.last_relative_residual, 1e-10);
+    // One more entry in each of two rows (a contact pair found): a new pattern, a new set-up.
+    SparseMatrixType coupled = system.matrix;
+    const auto last = static_cast<int>(coupled.rows()) - 1;
+    coupled.coeffRef(0, last) = -0.5;
+    coupled.coeffRef(last, 0) = -0.5;
+    coupled.makeCompressed();
+    EXPECT_LT(SolveError(*solver, system.layout, coupled), 1e-8);
+    EXPECT_EQ(solver->Statistics().preconditioner_setups, 2u);
+    EXPECT_LT(SolveError(*solver, system.layout, coupled), 1e-8);
+    EXPECT_EQ(solver->Statistics().preconditioner_setups, 2u);
+    // Another size.
+    NodalSystem smaller = GridSystem(7);
+    EXPECT_LT(SolveError(*solver, smaller.layout, smaller.matrix), 1e-8);
+    statistics = solver->Statistics();
+    EXPECT_EQ(statistics.preconditioner_setups, 3u);
+    EXPECT_EQ(statistics.krylov_iterations.size(), 7u);
+}
+
+TEST(PetscKrylovSolver, ByDefaultThePreconditionerIsSetUpAtEverySolve) {
+    SKIP_WITHOUT_PETSC();
+    NodalSystem system = GridSystem(8);
+    auto solver = AmgclSolver(true);
+    SolveStiffened(*solver, system, {1.0, 2.0, 4.0});
+    EXPECT_EQ(solver->Statistics().preconditioner_setups, 3u);
+}
+
+TEST(PetscKrylovSolver, WhatWasKeptAndFailsIsSetUpAnew) {
+    SKIP_WITHOUT_PETSC();
+    // First values: the diagonal alone (entries of the pattern left zero), whose AMG is no help on the full
+    // Laplacian. The solve with what was kept (the whole preconditioner without reform, GAMG's prolongators
+    // with it) stops at max_iteration; the retry after a complete set-up converges (else ConvergenceError).
+    NodalSystem system = GridSystem(14);
+    SparseMatrixType diagonal = system.matrix;
+    for (int col = 0; col < diagonal.outerSize(); ++col)
+        for (SparseMatrixType::InnerIterator it(diagonal, col); it; ++it)
+            if (it.row() != it.col()) it.valueRef() = 0.0;
+    for (const bool reform : {false, true}) {
+        SCOPED_TRACE(reform ? "reform" : "no reform");
+        auto solver = AmgclSolver(reform, 1e-8, 10);  // a fresh set-up needs 7 iterations, the kept prolongators 12
+        EXPECT_LT(SolveError(*solver, system.layout, diagonal), 1e-6);
+        EXPECT_LT(SolveError(*solver, system.layout, system.matrix), 1e-6);
+        const LinearSolverStatistics statistics = solver->Statistics();
+        EXPECT_EQ(statistics.preconditioner_setups, 2u);
+        EXPECT_LT(statistics.krylov_iterations.back(), 10);
+    }
 }
 
 TEST(PetscKrylovSolver, UnknownSettingsNameTheKey) {

@@ -76,6 +76,7 @@ def test_krylov_column_and_summary_of_an_iterative_solver() -> None:
         "krylov_iterations": [31, 25, *range(1, 11)],
         "tolerance": 1e-6,
         "preconditioner_seconds": 1.5,
+        "preconditioner_setups": 4,
         "krylov_seconds": 2.0,
         "near_null_space": 6,
     }
@@ -86,8 +87,8 @@ def test_krylov_column_and_summary_of_an_iterative_solver() -> None:
     assert lines[2].endswith("  1 2 3 4 5 6 7 8 ...")
     assert (
         "linear solver: mixed_ulm_linear_solver(petsc), gmres + gamg, 2 levels: 12 solves, 111 "
-        "iterations (max 31, mean 9.2) to a relative residual of 1e-06, set-up 1.5 s, iterations "
-        "2 s, 6 rigid-body modes"
+        "iterations (max 31, mean 9.2) to a relative residual of 1e-06, set-up 1.5 s (4 "
+        "preconditioner set-ups for 12 solves), iterations 2 s, 6 rigid-body modes"
     ) in stream.getvalue()
 
 

@@ -2,9 +2,10 @@
 
 GMRES + GAMG (rigid-body near-null space) on the dual-multiplier-condensed hertz_3d example
 (frictionless, scalar multipliers) and cattaneo_mindlin_3d (frictional, vector multipliers), against
-UMFPACK; the Krylov iterations in the step table and the summary; the same solve distributed over
-two MPI ranks (mpirun); the settings' validation; the message naming the package when PETSc is
-absent. Skipped, naming the package, when this build has no PETSc.
+UMFPACK; the Krylov iterations in the step table and the summary; the preconditioner kept under
+reform_preconditioner_at_each_step false; the same solve distributed over two MPI ranks (mpirun);
+the settings' validation; the message naming the package when PETSc is absent. Skipped, naming
+the package, when this build has no PETSc.
 """
 
 from __future__ import annotations
@@ -96,11 +97,37 @@ def test_amgcl_gives_the_umfpack_solution_of_a_frictional_3d_case(tmp_path: Path
 
 
 @needs_petsc
+def test_without_reform_the_preconditioner_is_kept_and_the_results_stay(tmp_path: Path) -> None:
+    """linear_solver_settings.reform_preconditioner_at_each_step false reaches the PETSc solver."""
+    every, every_table = case.run(tmp_path, "amgcl")
+    kept, kept_table = case.run(
+        tmp_path, "amgcl", linear={"reform_preconditioner_at_each_step": False}
+    )
+    solves = len(every.reporter.linear_solver["krylov_iterations"])
+    assert every.reporter.linear_solver["preconditioner_setups"] == solves
+    assert f"({solves} preconditioner set-ups for {solves} solves)" in every_table
+    statistics = kept.reporter.linear_solver
+    assert len(statistics["krylov_iterations"]) == solves
+    assert 1 <= statistics["preconditioner_setups"] < solves
+    setups = statistics["preconditioner_setups"]
+    assert f"({setups} preconditioner set-ups for {solves} solves)" in kept_table
+    newton = [s.iterations for s in every.reporter.steps]
+    assert [s.iterations for s in kept.reporter.steps] == newton
+    _assert_same_solution(case.displacements(every), case.displacements(kept))
+
+
+@needs_petsc
 @pytest.mark.skipif(shutil.which("mpirun") is None, reason="no mpirun (Debian openmpi-bin)")
-def test_two_mpi_ranks_give_the_serial_direct_solution(tmp_path: Path) -> None:
+@pytest.mark.parametrize("reform", [True, False])
+def test_two_mpi_ranks_give_the_serial_direct_solution(tmp_path: Path, reform: bool) -> None:
+    """The kept matrices are updated on every rank.
+
+    Without reform, rank 0's pattern check decides for all ranks.
+    """
     direct, _ = case.run(tmp_path, "umfpack")
     command = ["mpirun", "-n", "2", "--allow-run-as-root", "--oversubscribe"]
-    command += [sys.executable, str(CASE_SCRIPT), str(tmp_path), "amgcl"]
+    linear = json.dumps({"reform_preconditioner_at_each_step": reform})
+    command += [sys.executable, str(CASE_SCRIPT), str(tmp_path), "amgcl", "", linear]
     env = dict(os.environ, OMPI_MCA_rmaps_base_oversubscribe="1")
     done = subprocess.run(command, capture_output=True, text=True, timeout=600, env=env)
     assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
@@ -109,6 +136,8 @@ def test_two_mpi_ranks_give_the_serial_direct_solution(tmp_path: Path) -> None:
     assert result["statistics"]["ranks"] == 2
     assert "2 MPI ranks" in result["statistics"]["krylov_method"]
     assert result["iterations"] == [s.iterations for s in direct.reporter.steps]
+    setups, solves = result["statistics"]["preconditioner_setups"], sum(result["iterations"])
+    assert setups == solves if reform else 1 <= setups < solves
     displacements = {int(k): v for k, v in result["displacements"].items()}
     _assert_same_solution(case.displacements(direct), displacements)
 
