@@ -104,8 +104,14 @@ MortarPairIntegration<T, TDim, TNumNodes, TNumNodesMaster> IntegrateMortarPair(
 /// D read only the slave face and its face-centre normal; only the projection onto the master is repeated in TNormal, a
 /// fraction of the cost of integrating the pair with the normals seeded (docs/theory/mortar.md §7 "Normals that follow
 /// the iterate").
+/// @param[in] integrator the pair's mortar integrator in double
+/// @param[in] slave n_s × d current slave coordinates
+/// @param[in] slave_normal d-vector, slave condition normal (the segmentation direction)
+/// @param[in] master n_m × d current master coordinates
 /// @param[in] nodal_normals n_s × d unit nodal NORMAL of the slave nodes, with the derivatives wanted
-/// @param[out] rM M in TNormal (zero when the pair is not used); the other arguments as for IntegrateMortarPair
+/// @param[in] dual_lm request dual multipliers (falls back to standard ones when Ae fails)
+/// @param[out] rM M in TNormal (zero when the pair is not used)
+/// @return the pair in double, as IntegrateMortarPair
 template <int TDim, int TNumNodes, int TNumNodesMaster, class TNormal>
 MortarPairIntegration<double, TDim, TNumNodes, TNumNodesMaster> IntegrateMortarPairOverNormals(
     const MortarIntegrator<TDim, TNumNodes, TNumNodesMaster, double>& integrator,
