@@ -7,6 +7,7 @@
 
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/kernel/node.h"
+#include "contact_app/kernel/serializer.h"
 
 namespace contact_app {
 
@@ -31,11 +32,44 @@ void UpdatedLagrangianElement<TDim, TNumNodes>::Initialize(const ProcessInfo& rC
     CheckBufferSize();
     BaseType::Initialize(rCurrentProcessInfo);
     const std::size_t n = this->NumberOfIntegrationPoints();
+    if (mRestored && mF0.size() == n) return;
     mF0.assign(n, TensorType::Identity());
     mDetF0.assign(n, 1.0);
     mF0Next = mF0;
     mDetF0Next = mDetF0;
     mHasF0Next = false;
+}
+
+template <int TDim, int TNumNodes>
+void UpdatedLagrangianElement<TDim, TNumNodes>::Save(Serializer& rSerializer) const {
+    BaseType::Save(rSerializer);
+    rSerializer.Save("UpdatedLagrangianPoints", mF0.size());
+    for (std::size_t g = 0; g < mF0.size(); ++g) {
+        rSerializer.Save("F0", mF0[g]);
+        rSerializer.Save("DetF0", mDetF0[g]);
+        rSerializer.Save("F0Next", mF0Next[g]);
+        rSerializer.Save("DetF0Next", mDetF0Next[g]);
+    }
+    rSerializer.Save("HasF0Next", mHasF0Next);
+}
+
+template <int TDim, int TNumNodes>
+void UpdatedLagrangianElement<TDim, TNumNodes>::Load(Serializer& rSerializer) {
+    BaseType::Load(rSerializer);
+    std::size_t n = 0;
+    rSerializer.Load("UpdatedLagrangianPoints", n);
+    mF0.resize(n);
+    mDetF0.resize(n);
+    mF0Next.resize(n);
+    mDetF0Next.resize(n);
+    for (std::size_t g = 0; g < n; ++g) {
+        rSerializer.Load("F0", mF0[g]);
+        rSerializer.Load("DetF0", mDetF0[g]);
+        rSerializer.Load("F0Next", mF0Next[g]);
+        rSerializer.Load("DetF0Next", mDetF0Next[g]);
+    }
+    rSerializer.Load("HasF0Next", mHasF0Next);
+    mRestored = n > 0;
 }
 
 template <int TDim, int TNumNodes>

@@ -25,7 +25,8 @@ public:
     Element::Pointer Create(IndexType new_id, Geometry::Pointer geometry,
                             Properties::Pointer properties) const override;
 
-    /// @brief Base Initialize, then F0 = I, det F0 = 1 at every point. @throws InputError if the buffer is < 2
+    /// @brief Base Initialize, then F0 = I, det F0 = 1 at every point (unless Load restored them). @throws InputError if
+    ///        the buffer is < 2
     void Initialize(const ProcessInfo& rCurrentProcessInfo) override;
     /// @brief Makes the F stored by the last FinalizeSolutionStep the new F0, then the base hook.
     void InitializeSolutionStep(const ProcessInfo& rCurrentProcessInfo) override;
@@ -33,6 +34,11 @@ public:
     void FinalizeSolutionStep(const ProcessInfo& rCurrentProcessInfo) override;
     /// @brief Base checks plus a nodal buffer of at least 2 steps. @throws InputError
     int Check(const ProcessInfo& rCurrentProcessInfo) const override;
+    /// @brief Base state, then F0 and the F stored for the next step at every point: without them a restarted run
+    ///        would measure its strains from the restart configuration (F0 = I).
+    void Save(Serializer& rSerializer) const override;
+    /// @brief As Save wrote it; the Initialize that follows a restart keeps the loaded F0.
+    void Load(Serializer& rSerializer) override;
 
 protected:
     const char* FamilyName() const override { return "UpdatedLagrangianElement"; }
@@ -52,6 +58,7 @@ private:
     std::vector<TensorType> mF0Next;  ///< F stored by FinalizeSolutionStep, applied at InitializeSolutionStep
     std::vector<double> mDetF0Next;
     bool mHasF0Next = false;
+    bool mRestored = false;  ///< F0 came from Load (a restart), not from the undeformed configuration
 };
 
 #define CONTACT_APP_UPDATED_LAGRANGIAN_EXTERN(TDim, TNumNodes, Geometry, Suffix) \
