@@ -12,22 +12,21 @@ from __future__ import annotations
 import argparse
 import json
 import resource
+import sys
 import time
+from pathlib import Path
 
 import contact_app as ca
+
+# The tests' builder of the "Structure" model part (tests/python is no package).
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "python"))
+from structure_model_part import create_structure  # noqa: E402
 
 
 def build_block(n: int) -> tuple[ca.Model, ca.ModelPart]:
     """Create a unit cube of n^3 hexahedra, clamped at z = 0, with a prescribed top displacement."""
     model = ca.Model()
-    mp = model.CreateModelPart("Structure", 2)
-    for variable in (ca.DISPLACEMENT, ca.REACTION, ca.VOLUME_ACCELERATION):
-        mp.AddNodalSolutionStepVariable(variable)
-    mp.ProcessInfo[ca.DOMAIN_SIZE] = 3
-    props = mp.CreateNewProperties(1)
-    props[ca.YOUNG_MODULUS] = 210e9
-    props[ca.POISSON_RATIO] = 0.3
-    props[ca.CONSTITUTIVE_LAW] = ca.create_constitutive_law("LinearElastic3DLaw")
+    mp, props = create_structure(model, 3, 210e9, "LinearElastic3DLaw", thickness=None)
     h = 1.0 / n
     stride = n + 1
     for k in range(n + 1):

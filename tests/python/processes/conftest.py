@@ -6,6 +6,7 @@ from collections.abc import Callable, Iterable
 from typing import Any
 
 import pytest
+from structure_model_part import create_structure
 
 import contact_app as ca
 from contact_app.parameters import Parameters
@@ -34,15 +35,7 @@ def build_plate(model: ca.Model) -> ca.ModelPart:
     Sub model parts: "Bottom" (nodes 1-3), "Top" (nodes 7-9, line conditions 1-2), "Body"
     (elements and all nodes).
     """
-    mp = model.CreateModelPart("Structure", 2)
-    for variable in (ca.DISPLACEMENT, ca.REACTION, ca.VOLUME_ACCELERATION):
-        mp.AddNodalSolutionStepVariable(variable)
-    mp.ProcessInfo[ca.DOMAIN_SIZE] = 2
-    props = mp.CreateNewProperties(1)
-    props[ca.YOUNG_MODULUS] = 200.0
-    props[ca.POISSON_RATIO] = 0.3
-    props[ca.THICKNESS] = 1.0
-    props.SetValue(ca.CONSTITUTIVE_LAW, ca.create_constitutive_law("LinearElasticPlaneStress2DLaw"))
+    mp, props = create_structure(model, 2, 200.0, "LinearElasticPlaneStress2DLaw", thickness=1.0)
     for node_id, (x, y) in PLATE_NODES.items():
         node = mp.CreateNewNode(node_id, x, y, 0.0)
         node.AddDof(ca.DISPLACEMENT_X, ca.REACTION_X)

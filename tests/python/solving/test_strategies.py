@@ -2,21 +2,14 @@
 
 import numpy as np
 import pytest
+from structure_model_part import create_structure
 
 import contact_app as ca
 
 
 def _plate(model: ca.Model, law: str = "LinearElasticPlaneStress2DLaw") -> ca.ModelPart:
     """Build a 2 x 1 plate of 4 x 2 distorted bilinear quads (E = 200, nu = 0.3, t = 1)."""
-    mp = model.CreateModelPart("Structure", 2)
-    for variable in (ca.DISPLACEMENT, ca.REACTION, ca.VOLUME_ACCELERATION):
-        mp.AddNodalSolutionStepVariable(variable)
-    mp.ProcessInfo[ca.DOMAIN_SIZE] = 2
-    props = mp.CreateNewProperties(1)
-    props[ca.YOUNG_MODULUS] = 200.0
-    props[ca.POISSON_RATIO] = 0.3
-    props[ca.THICKNESS] = 1.0
-    props.SetValue(ca.CONSTITUTIVE_LAW, ca.create_constitutive_law(law))
+    mp, props = create_structure(model, 2, 200.0, law, thickness=1.0)
     nx, ny = 4, 2
     for j in range(ny + 1):
         for i in range(nx + 1):
