@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
+from typing import Any
 
 import pytest
 from conftest import build_plate, create, impose_displacement, run_steps
@@ -14,6 +15,23 @@ from contact_app.processes.from_json_check_result_process import ResultCheckErro
 
 def _solve(plate: ca.ModelPart):  # noqa: ANN202 - small closure for run_steps
     return lambda time: impose_displacement(plate, time)
+
+
+def _top_output(
+    model: ca.Model, output: Path, variables: list[str], time_frequency: float, **parameters: Any
+) -> Any:
+    """A json_output_process of ``variables`` on "Structure.Top" writing ``output``."""
+    return create(
+        "json_output_process",
+        {
+            "output_variables": variables,
+            **parameters,
+            "output_file_name": str(output),
+            "model_part_name": "Structure.Top",
+            "time_frequency": time_frequency,
+        },
+        model,
+    )
 
 
 def test_json_output_layout_matches_the_kratos_results_files(
@@ -58,16 +76,7 @@ def test_json_output_time_frequency_is_strict(
     model: ca.Model, plate: ca.ModelPart, tmp_path: Path
 ) -> None:
     output = tmp_path / "results.json"
-    process = create(
-        "json_output_process",
-        {
-            "output_variables": ["DISPLACEMENT_X"],
-            "output_file_name": str(output),
-            "model_part_name": "Structure.Top",
-            "time_frequency": 1.0,
-        },
-        model,
-    )
+    process = _top_output(model, output, ["DISPLACEMENT_X"], 1.0)
     run_steps(plate, [process], [0.25 * k for k in range(1, 12)], _solve(plate))
     # counter: 0.25 ... 1.0 is not > 1.0; 1.25 is -> output at t = 1.25, then again 1.25 later
     assert json.loads(output.read_text())["TIME"] == [1.25, 2.5]
@@ -77,17 +86,13 @@ def test_json_output_flag_writes_null_where_the_flag_is_off(
     model: ca.Model, plate: ca.ModelPart, tmp_path: Path
 ) -> None:
     output = tmp_path / "results.json"
-    process = create(
-        "json_output_process",
-        {
-            "output_variables": ["AUGMENTED_NORMAL_CONTACT_PRESSURE"],
-            "historical_value": False,
-            "check_for_flag": "ACTIVE",
-            "output_file_name": str(output),
-            "model_part_name": "Structure.Top",
-            "time_frequency": 0.0,
-        },
+    process = _top_output(
         model,
+        output,
+        ["AUGMENTED_NORMAL_CONTACT_PRESSURE"],
+        0.0,
+        historical_value=False,
+        check_for_flag="ACTIVE",
     )
 
     def contact(time: float) -> None:
@@ -105,17 +110,7 @@ def test_json_output_resultant_sums_the_nodes(
     model: ca.Model, plate: ca.ModelPart, tmp_path: Path
 ) -> None:
     output = tmp_path / "results.json"
-    process = create(
-        "json_output_process",
-        {
-            "output_variables": ["DISPLACEMENT"],
-            "resultant_solution": True,
-            "output_file_name": str(output),
-            "model_part_name": "Structure.Top",
-            "time_frequency": 0.0,
-        },
-        model,
-    )
+    process = _top_output(model, output, ["DISPLACEMENT"], 0.0, resultant_solution=True)
     run_steps(plate, [process], [1.0], _solve(plate))
     data = json.loads(output.read_text())
     assert set(data) == {"TIME", "RESULTANT"}
