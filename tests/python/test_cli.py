@@ -3,15 +3,14 @@
 from __future__ import annotations
 
 import json
-import os
 import shutil
 import subprocess
-import sys
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 import pytest
+from cli_runner import run_cli
 
 import contact_app as ca
 from contact_app import cli
@@ -75,17 +74,6 @@ def malformed_mdpa(tmp_path: Path) -> Path:
     return path
 
 
-def _run_module(*args: str) -> subprocess.CompletedProcess[str]:
-    env = dict(os.environ, PYTHONPATH=os.pathsep.join(path for path in sys.path if path))
-    return subprocess.run(
-        [sys.executable, "-m", "contact_app", *args],
-        capture_output=True,
-        text=True,
-        env=env,
-        check=False,
-    )
-
-
 def test_cli_info_prints_tree_and_type_counts(
     small_mdpa: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
@@ -106,7 +94,7 @@ def test_cli_info_accepts_the_name_without_extension(
 
 
 def test_cli_python_m_info_exits_zero(small_mdpa: Path) -> None:
-    result = _run_module("info", str(small_mdpa))
+    result = run_cli("info", str(small_mdpa), cwd=None, timeout=None)
     assert result.returncode == 0, result.stderr
     assert "Element2D4N: 2" in result.stdout
 
@@ -121,7 +109,7 @@ def test_cli_console_script_info_exits_zero(small_mdpa: Path) -> None:
 
 
 def test_cli_info_malformed_file_exits_two_without_traceback(malformed_mdpa: Path) -> None:
-    result = _run_module("info", str(malformed_mdpa))
+    result = run_cli("info", str(malformed_mdpa), cwd=None, timeout=None)
     assert result.returncode == 2
     assert result.stderr.startswith("error: ")
     assert "malformed.mdpa:2" in result.stderr
@@ -374,19 +362,6 @@ def run_case(tmp_path: Path) -> Path:
     return tmp_path / "case"
 
 
-def _run_in(cwd: Path, *args: str) -> subprocess.CompletedProcess[str]:
-    env = dict(os.environ, PYTHONPATH=os.pathsep.join(path for path in sys.path if path))
-    return subprocess.run(
-        [sys.executable, "-m", "contact_app", *args],
-        cwd=cwd,
-        capture_output=True,
-        text=True,
-        env=env,
-        timeout=60,
-        check=False,
-    )
-
-
 @pytest.mark.parametrize(
     ("edit", "fragment"), [case[1:] for case in BAD_INPUTS], ids=[case[0] for case in BAD_INPUTS]
 )
@@ -394,7 +369,7 @@ def test_cli_run_bad_input_exits_two_with_one_message(
     run_case: Path, edit: Callable[[Path], None], fragment: str
 ) -> None:
     edit(run_case)
-    result = _run_in(run_case.parent, "run", f"case/{PARAMETERS}")
+    result = run_cli("run", f"case/{PARAMETERS}", cwd=run_case.parent)
     assert result.returncode == 2, result.stderr
     assert "Traceback" not in result.stderr
     errors = [line for line in result.stderr.splitlines() if line.startswith("error: ")]
@@ -406,7 +381,7 @@ def test_cli_run_bad_input_exits_two_with_one_message(
 
 def test_cli_run_error_names_the_location(run_case: Path) -> None:
     _solver(lambda s: s.update(max_iterations=5))(run_case)
-    result = _run_in(run_case.parent, "run", f"case/{PARAMETERS}")
+    result = run_cli("run", f"case/{PARAMETERS}", cwd=run_case.parent)
     assert (
         "where:    plate_static_parameters.json › solver_settings › max_iterations" in result.stderr
     )
@@ -415,20 +390,20 @@ def test_cli_run_error_names_the_location(run_case: Path) -> None:
 
 def test_cli_run_malformed_json_gives_line_and_column(run_case: Path) -> None:
     _malformed(run_case)
-    result = _run_in(run_case.parent, "run", f"case/{PARAMETERS}")
+    result = run_cli("run", f"case/{PARAMETERS}", cwd=run_case.parent)
     assert "where:    line 4, column" in result.stderr
 
 
 def test_cli_run_debug_shows_the_traceback(run_case: Path) -> None:
     _solver(lambda s: s.update(max_iterations=5))(run_case)
-    result = _run_in(run_case.parent, "run", "--debug", f"case/{PARAMETERS}")
+    result = run_cli("run", "--debug", f"case/{PARAMETERS}", cwd=run_case.parent)
     assert result.returncode != 0
     assert "Traceback" in result.stderr
     assert "InputError" in result.stderr
 
 
 def test_cli_run_missing_parameters_file(tmp_path: Path) -> None:
-    result = _run_in(tmp_path, "run", "nothing.json")
+    result = run_cli("run", "nothing.json", cwd=tmp_path)
     assert result.returncode == 2
     assert result.stderr.startswith('error: cannot read the settings file "nothing.json"')
 
@@ -451,7 +426,7 @@ def test_cli_run_ctrl_c_exits_130_with_one_line(run_case: Path) -> None:
     _params(lambda p: p["processes"].update(interrupt=[{"python_module": "interrupt_process"}]))(
         run_case
     )
-    result = _run_in(run_case.parent, "run", f"case/{PARAMETERS}")
+    result = run_cli("run", f"case/{PARAMETERS}", cwd=run_case.parent)
     assert result.returncode == 130
     assert result.stderr.strip().splitlines()[-1] == "interrupted (Ctrl-C)"
     assert "Traceback" not in result.stderr

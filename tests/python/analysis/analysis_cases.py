@@ -4,9 +4,6 @@ from __future__ import annotations
 
 import json
 import math
-import os
-import subprocess
-import sys
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -97,20 +94,6 @@ def bar_dynamic_results(dt: float = 0.01, end_time: float = 0.05) -> dict[str, A
 def load(path: Path) -> dict[str, Any]:
     """Read a JSON file."""
     return json.loads(path.read_text())
-
-
-def run_cli(*args: str, cwd: Path, timeout: float = 60.0) -> subprocess.CompletedProcess[str]:
-    """``python -m contact_app <args>`` in ``cwd``."""
-    env = dict(os.environ, PYTHONPATH=os.pathsep.join(p for p in sys.path if p))
-    return subprocess.run(
-        [sys.executable, "-m", "contact_app", *args],
-        cwd=cwd,
-        capture_output=True,
-        text=True,
-        env=env,
-        timeout=timeout,
-        check=False,
-    )
 
 
 Edit = Callable[[dict[str, Any]], None]

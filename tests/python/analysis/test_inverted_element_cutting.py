@@ -13,7 +13,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from analysis_cases import run_cli
+from cli_runner import run_cli
 
 import contact_app as ca
 

@@ -17,8 +17,8 @@ from analysis_cases import (
     load,
     node_coordinates,
     plate_displacements,
-    run_cli,
 )
+from cli_runner import run_cli
 
 import contact_app as ca
 from contact_app.analysis import StructuralMechanicsAnalysis, ValidateProjectParameters
