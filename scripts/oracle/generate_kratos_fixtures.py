@@ -29,36 +29,14 @@ from KratosMultiphysics.StructuralMechanicsApplication.structural_mechanics_anal
 )
 
 ROOT = Path(__file__).resolve().parents[2]
-CASES_DIR = ROOT.parent / "shared" / "kratos_cases"
 OUT = ROOT / "tests" / "python" / "contact" / "data" / "kratos_oracle"
-CASES = {
-    "alm_frictionless_2d_hyper_simple": "ALM_frictionless_contact_test_2D/hyper_simple_patch_test",
-    "alm_frictionless_2d_taylor": "ALM_frictionless_contact_test_2D/taylor_patch_test",
-    "alm_frictionless_3d_slope": (
-        "ALM_frictionless_contact_test_3D/3D_contact_simplest_patch_matching_slope_test"
-    ),
-    "alm_frictional_2d_hyper_simple": "ALM_frictional_contact_test_2D/hyper_simple_patch_test",
-    "penalty_frictionless_2d": "penalty_frictionless_contact_test_2D/hyper_simple_patch_test",
-    "penalty_frictional_2d_stick": (
-        "penalty_frictional_contact_test_2D/perfect_stick_hyper_simple_patch_test"
-    ),
-    "mesh_tying_2d": "mesh_tying_test/simple_patch_test_2D",
-    "mpc_2d_matching": "mpc_contact_tests/2D_contact_simplest_patch_matching_test",
-}
-
-
-def _strip(value):
-    """Drop keys the current Kratos no longer accepts (mesh_id)."""
-    if isinstance(value, dict):
-        return {k: _strip(v) for k, v in value.items() if k != "mesh_id"}
-    if isinstance(value, list):
-        return [_strip(v) for v in value]
-    return value
+sys.path.insert(0, str(ROOT / "tests" / "python" / "contact"))
+from kratos_cases import CASES, CASES_DIR, strip_mesh_id  # noqa: E402  (tests/python/contact/)
 
 
 def run(name: str, case: str, components: bool) -> dict:
     os.chdir(CASES_DIR)
-    raw = _strip(json.loads(Path(f"{case}_parameters.json").read_text()))
+    raw = strip_mesh_id(json.loads(Path(f"{case}_parameters.json").read_text()))
     checks = raw["processes"].pop("json_check_process", [])
     raw.pop("output_processes", None)
     # A direct solver of the core (some cases name solvers of applications not on PyPI).

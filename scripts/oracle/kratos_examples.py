@@ -48,7 +48,7 @@ ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tests" / "python" / "examples"))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import kratos_examples_common as common  # noqa: E402  (tests/python/examples/)
-from generate_kratos_fixtures import _strip  # noqa: E402  (drops mesh_id)
+from generate_kratos_fixtures import strip_mesh_id  # noqa: E402  (drops mesh_id)
 
 OUT = ROOT / "tests" / "python" / "examples" / "data" / "kratos_examples"
 
@@ -72,7 +72,7 @@ def _kept_steps(count: int) -> set[int]:
 def run(name: str, cap: float) -> dict:
     """Run one model in a scratch folder; return its fixture."""
     KM.ParallelUtilities.SetNumThreads(1)
-    raw = _strip(common.prepared_parameters(name))
+    raw = strip_mesh_id(common.prepared_parameters(name))
     analysis_class = common.recording_analysis(StructuralMechanicsAnalysis, _Variables())
     failure = None
     previous = Path.cwd()

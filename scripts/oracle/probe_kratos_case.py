@@ -24,21 +24,14 @@ from KratosMultiphysics.StructuralMechanicsApplication.structural_mechanics_anal
     StructuralMechanicsAnalysis,
 )
 
-CASES_DIR = Path(__file__).resolve().parents[2].parent / "shared" / "kratos_cases"
-
-
-def _strip(value):
-    if isinstance(value, dict):
-        return {k: _strip(v) for k, v in value.items() if k != "mesh_id"}
-    if isinstance(value, list):
-        return [_strip(v) for v in value]
-    return value
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tests" / "python" / "contact"))
+from kratos_cases import CASES_DIR, strip_mesh_id  # noqa: E402  (tests/python/contact/)
 
 
 def main() -> int:
     case = sys.argv[1]
     os.chdir(CASES_DIR)
-    raw = _strip(json.loads(Path(f"{case}_parameters.json").read_text()))
+    raw = strip_mesh_id(json.loads(Path(f"{case}_parameters.json").read_text()))
     raw["processes"].pop("json_check_process", None)
     raw.pop("output_processes", None)
     raw["solver_settings"]["linear_solver_settings"] = {"solver_type": "skyline_lu_factorization"}

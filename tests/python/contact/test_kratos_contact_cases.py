@@ -19,6 +19,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from kratos_cases import CASES, CASES_DIR
 
 import contact_app as ca
 from contact_app.analysis import StructuralMechanicsAnalysis
@@ -26,24 +27,8 @@ from contact_app.analysis.reporting import Reporter
 from contact_app.parameters import Parameters
 from contact_app.processes.from_json_check_result_process import FromJsonCheckResultProcess
 
-CASES_DIR = Path(__file__).resolve().parents[3].parent / "shared" / "kratos_cases"
 #: What the current Kratos computes for each case (scripts/oracle/generate_kratos_fixtures.py).
 ORACLE_DIR = Path(__file__).resolve().parent / "data" / "kratos_oracle"
-
-CASES = {
-    "alm_frictionless_2d_hyper_simple": "ALM_frictionless_contact_test_2D/hyper_simple_patch_test",
-    "alm_frictionless_2d_taylor": "ALM_frictionless_contact_test_2D/taylor_patch_test",
-    "alm_frictionless_3d_slope": (
-        "ALM_frictionless_contact_test_3D/3D_contact_simplest_patch_matching_slope_test"
-    ),
-    "alm_frictional_2d_hyper_simple": "ALM_frictional_contact_test_2D/hyper_simple_patch_test",
-    "penalty_frictionless_2d": "penalty_frictionless_contact_test_2D/hyper_simple_patch_test",
-    "penalty_frictional_2d_stick": (
-        "penalty_frictional_contact_test_2D/perfect_stick_hyper_simple_patch_test"
-    ),
-    "mesh_tying_2d": "mesh_tying_test/simple_patch_test_2D",
-    "mpc_2d_matching": "mpc_contact_tests/2D_contact_simplest_patch_matching_test",
-}
 COMPONENTS = [name for name in CASES if name.startswith("alm_frictionless")]
 
 #: The reference takes the slip direction from the tangential multiplier alone and converges to a
