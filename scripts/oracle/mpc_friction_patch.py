@@ -40,6 +40,8 @@ from KratosMultiphysics.StructuralMechanicsApplication.structural_mechanics_anal
 
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "tests" / "python" / "contact" / "data" / "kratos_oracle"
+sys.path.insert(0, str(ROOT / "tests" / "python"))
+from process_descriptors import hold_displacement  # noqa: E402  (tests/python/)
 
 MU = 0.3
 PRESSURE = 10.0
@@ -190,25 +192,13 @@ def materials(mu: float | None) -> dict:
     }
 
 
-def _fix(part: str, constrained: list[bool], value: list, interval: list) -> dict:
-    return {
-        "python_module": "assign_vector_variable_process",
-        "kratos_module": "KratosMultiphysics",
-        "Parameters": {
-            "model_part_name": f"Structure.{part}",
-            "variable_name": "DISPLACEMENT",
-            "constrained": constrained,
-            "value": value,
-            "interval": interval,
-        },
-    }
-
-
 def parameters(route: str, mu_process: float) -> dict:
     """Static, one step per entry of TOP_UX; route "mpc" or "alm"."""
     steps = len(TOP_UX)
     guides = [
-        _fix("Top", [True, True, False], [ux, 0.0, None], [step + 0.5, step + 1.5])
+        hold_displacement(
+            "Top", [True, True, False], [ux, 0.0, None], interval=[step + 0.5, step + 1.5]
+        )
         for step, ux in enumerate(TOP_UX)
     ]
     contact = {
@@ -253,7 +243,9 @@ def parameters(route: str, mu_process: float) -> dict:
         "solver_settings": solver,
         "processes": {
             "constraints_process_list": [
-                _fix("Base", [True, True, True], [0.0, 0.0, 0.0], [0.0, "End"]),
+                hold_displacement(
+                    "Base", [True, True, True], [0.0, 0.0, 0.0], interval=[0.0, "End"]
+                ),
                 *guides,
             ],
             "loads_process_list": [

@@ -14,6 +14,7 @@ from typing import Any
 
 import pytest
 from cli_runner import run_cli
+from process_descriptors import hold_displacement
 
 import contact_app as ca
 
@@ -70,25 +71,13 @@ def _write_block(folder: Path, element: str, **solver_settings: Any) -> Path:
         **solver_settings,
     }
 
-    def hold(part: str, value: list[Any]) -> dict[str, Any]:
-        return {
-            "python_module": "assign_vector_variable_process",
-            "kratos_module": "KratosMultiphysics",
-            "Parameters": {
-                "model_part_name": f"Structure.{part}",
-                "variable_name": "DISPLACEMENT",
-                "constrained": [True, True, True],
-                "value": value,
-            },
-        }
-
     parameters = {
         "problem_data": {"problem_name": "block", "start_time": 0.0, "end_time": 1.0},
         "solver_settings": solver,
         "processes": {
             "constraints_process_list": [
-                hold("bottom", [0.0, 0.0, 0.0]),
-                hold("top", [0.0, f"-{SQUEEZE}*t", 0.0]),
+                hold_displacement("bottom", [True, True, True], [0.0, 0.0, 0.0]),
+                hold_displacement("top", [True, True, True], [0.0, f"-{SQUEEZE}*t", 0.0]),
             ]
         },
         "output_processes": {},

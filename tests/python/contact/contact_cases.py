@@ -8,30 +8,9 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
+from process_descriptors import core_process, hold_displacement
+
 CONTACT_APPLICATION = "KratosMultiphysics.ContactStructuralMechanicsApplication"
-
-
-def core_process(module: str, parameters: dict[str, Any]) -> dict[str, Any]:
-    """Return the descriptor of a core (``KratosMultiphysics``) process."""
-    return {
-        "python_module": module,
-        "kratos_module": "KratosMultiphysics",
-        "Parameters": parameters,
-    }
-
-
-def hold_displacement(part: str, constrained: list[bool], value: list[Any], **extra: Any) -> dict:
-    """Return an ``assign_vector_variable_process`` on DISPLACEMENT of ``Structure.<part>``."""
-    return core_process(
-        "assign_vector_variable_process",
-        {
-            "model_part_name": f"Structure.{part}",
-            "variable_name": "DISPLACEMENT",
-            "constrained": constrained,
-            "value": value,
-            **extra,
-        },
-    )
 
 
 def roller(part: str, axes: tuple[int, ...]) -> dict[str, Any]:
