@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import logging
 from collections.abc import Callable, Sequence
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
 from numpy.typing import NDArray
@@ -200,27 +200,44 @@ def contact_status(
     return (int(active_ids.size), slip, pairs, penetration)
 
 
-class ContactSolverMixin(SolverMixinBase):
-    """Contact additions to a structural solver (used before the structural base in the MRO)."""
+class ForcingSolverMixin(SolverMixinBase):
+    """A structural solver with one more settings block that forces some ``solver_settings``.
+
+    What the contact and the MPC contact mixins share; each names its block and forced keys.
+    """
+
+    #: The ``solver_settings`` key of the added block, and the block's defaults.
+    SETTINGS_BLOCK: ClassVar[str]
+    SETTINGS_BLOCK_DEFAULTS: ClassVar[dict[str, Any]]
+    #: The keys :class:`ForcedSettings` sets to true, and why (its ``reason``).
+    FORCED_KEYS: ClassVar[Sequence[str]]
+    FORCED_REASON: ClassVar[str]
 
     def __init__(
         self, model: ca.Model, custom_settings: Parameters, paths: PathResolver | None = None
     ) -> None:
-        self._forced = ForcedSettings(
-            custom_settings,
-            FORCED_SOLVER_SETTINGS,
-            "the contact solvers require: the contact pairs, and with them the Lagrange multiplier "
-            "DoFs, change between steps, so the DoF set is rebuilt and the stored system cleared "
-            "at every step",
-        )
+        self._forced = ForcedSettings(custom_settings, self.FORCED_KEYS, self.FORCED_REASON)
         super().__init__(model, custom_settings, paths)
 
     @classmethod
     def GetDefaultParameters(cls) -> dict[str, Any]:
-        """The structural defaults plus ``contact_settings``."""
+        """The structural defaults plus the ``SETTINGS_BLOCK`` block."""
         defaults = super().GetDefaultParameters()
-        defaults["contact_settings"] = CONTACT_SETTINGS_DEFAULTS
+        defaults[cls.SETTINGS_BLOCK] = cls.SETTINGS_BLOCK_DEFAULTS
         return defaults
+
+
+class ContactSolverMixin(ForcingSolverMixin):
+    """Contact additions to a structural solver (used before the structural base in the MRO)."""
+
+    SETTINGS_BLOCK = "contact_settings"
+    SETTINGS_BLOCK_DEFAULTS = CONTACT_SETTINGS_DEFAULTS
+    FORCED_KEYS = FORCED_SOLVER_SETTINGS
+    FORCED_REASON = (
+        "the contact solvers require: the contact pairs, and with them the Lagrange multiplier "
+        "DoFs, change between steps, so the DoF set is rebuilt and the stored system cleared "
+        "at every step"
+    )
 
     def ValidateSettings(self) -> None:
         """Structural checks, then ``contact_settings`` (unknown keys are errors)."""

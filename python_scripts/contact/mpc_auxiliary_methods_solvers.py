@@ -14,15 +14,14 @@ from typing import Any
 
 import contact_app as ca
 from contact_app import _core
-from contact_app.analysis.paths import PathResolver
 from contact_app.analysis.solvers.convergence_criteria_factory import (
     ConvergenceCriterion,
     CreateConvergenceCriterion,
 )
 from contact_app.analysis.validation import error, not_supported
-from contact_app.parameters import Parameters, suggest
+from contact_app.parameters import suggest
 
-from .auxiliary_methods_solvers import ForcedSettings, SolverMixinBase, contact_status
+from .auxiliary_methods_solvers import ForcingSolverMixin, contact_status
 
 logger = logging.getLogger("contact_app.contact")
 
@@ -49,27 +48,17 @@ def mpc_variables(contact_type: str) -> list[Any]:
     return variables
 
 
-class MPCContactSolverMixin(SolverMixinBase):
+class MPCContactSolverMixin(ForcingSolverMixin):
     """MPC contact additions to a structural solver (used before the structural base in the MRO)."""
 
-    def __init__(
-        self, model: ca.Model, custom_settings: Parameters, paths: PathResolver | None = None
-    ) -> None:
-        self._forced = ForcedSettings(
-            custom_settings,
-            MPC_FORCED_SOLVER_SETTINGS,
-            "the MPC contact solvers require: the MPC criterion reads the contact forces from the "
-            "reactions, and the contact constraints change between steps, so the DoF set is "
-            "rebuilt and the stored system cleared at every step",
-        )
-        super().__init__(model, custom_settings, paths)
-
-    @classmethod
-    def GetDefaultParameters(cls) -> dict[str, Any]:
-        """The structural defaults plus ``mpc_contact_settings``."""
-        defaults = super().GetDefaultParameters()
-        defaults["mpc_contact_settings"] = MPC_CONTACT_SETTINGS_DEFAULTS
-        return defaults
+    SETTINGS_BLOCK = "mpc_contact_settings"
+    SETTINGS_BLOCK_DEFAULTS = MPC_CONTACT_SETTINGS_DEFAULTS
+    FORCED_KEYS = MPC_FORCED_SOLVER_SETTINGS
+    FORCED_REASON = (
+        "the MPC contact solvers require: the MPC criterion reads the contact forces from the "
+        "reactions, and the contact constraints change between steps, so the DoF set is "
+        "rebuilt and the stored system cleared at every step"
+    )
 
     def ValidateSettings(self) -> None:
         """Structural checks, then ``mpc_contact_settings`` (unknown keys are errors).
