@@ -8,10 +8,11 @@ variables, DoFs, criterion), read from the C++ condition table (docs/registered_
 
 from __future__ import annotations
 
+from collections.abc import Collection
 from typing import Any
 
 from contact_app._core import InputError, MortarType, MortarTypes
-from contact_app.parameters import Parameters
+from contact_app.parameters import Parameters, suggest
 
 #: The pair keys Kratos accepts, in order.
 PAIR_KEYS = tuple(str(i) for i in range(10))
@@ -43,6 +44,15 @@ def fail(settings: Parameters, key: str, what: str, expected: str, fix: str = ""
     if fix:
         message += f"\n  fix:      {fix}"
     return InputError(message)
+
+
+def unknown_choice(
+    settings: Parameters, key: str, written: str, value: str, choices: Collection[str]
+) -> InputError:
+    """:func:`fail` for ``settings[key]``, written ``written``, whose ``value`` is not a choice."""
+    what = f'unknown {key} "{written}"'
+    listing = ", ".join(f'"{choice}"' for choice in choices)
+    return fail(settings, key, what, f"one of {listing}", suggest(value, list(choices)))
 
 
 def string_lists(settings: Parameters, key: str) -> dict[str, list[str]]:

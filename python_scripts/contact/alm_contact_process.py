@@ -16,9 +16,16 @@ from typing import Any
 
 import contact_app as ca
 from contact_app import _core
-from contact_app.parameters import Parameters, suggest
+from contact_app.parameters import Parameters
 
-from ._pairs import PAIR_KEYS, fail, pair_block, process_contact_types, process_mortar_type
+from ._pairs import (
+    PAIR_KEYS,
+    fail,
+    pair_block,
+    process_contact_types,
+    process_mortar_type,
+    unknown_choice,
+)
 from .search_base_process import SearchBaseProcess, base_defaults
 
 logger = logging.getLogger("contact_app.contact")
@@ -108,22 +115,11 @@ class ALMContactProcess(SearchBaseProcess):
         written = settings["contact_type"].GetString()
         base = written.removesuffix(NORMAL_UPDATE_SUFFIX)
         if base not in self._contact_types():
-            raise fail(
-                settings,
-                "contact_type",
-                f'unknown contact_type "{written}"',
-                "one of " + ", ".join(f'"{t}"' for t in self._contact_types()),
-                suggest(base, list(self._contact_types())),
-            )
+            raise unknown_choice(settings, "contact_type", written, base, self._contact_types())
         variation = settings["normal_variation"].GetString().lower()
         if variation not in NORMAL_VARIATION:
-            raise fail(
-                settings,
-                "normal_variation",
-                f'unknown normal_variation "{settings["normal_variation"].GetString()}"',
-                "one of " + ", ".join(f'"{v}"' for v in NORMAL_VARIATION),
-                suggest(variation, list(NORMAL_VARIATION)),
-            )
+            written = settings["normal_variation"].GetString()
+            raise unknown_choice(settings, "normal_variation", written, variation, NORMAL_VARIATION)
         self.contact_type = base
         self.mortar = process_mortar_type(self.method, base)
         self.is_frictional = self.mortar.frictional

@@ -12,9 +12,9 @@ from typing import Any
 
 import contact_app as ca
 from contact_app import _core
-from contact_app.parameters import Parameters, suggest
+from contact_app.parameters import Parameters
 
-from ._pairs import fail, pair_block
+from ._pairs import pair_block, unknown_choice
 from .search_base_process import SearchBaseProcess, base_defaults
 
 CONTACT_TYPES = ("Frictionless", "Frictional", "MeshTying")
@@ -53,12 +53,8 @@ class MPCContactProcess(SearchBaseProcess):
         self.settings = settings
         contact_type = settings["contact_type"].GetString()
         if contact_type not in CONTACT_TYPES:
-            raise fail(
-                settings,
-                "contact_type",
-                f'unknown contact_type "{contact_type}"',
-                "one of " + ", ".join(f'"{t}"' for t in CONTACT_TYPES),
-                suggest(contact_type, list(CONTACT_TYPES)),
+            raise unknown_choice(
+                settings, "contact_type", contact_type, contact_type, CONTACT_TYPES
             )
         self.contact_type = contact_type
         self.is_frictional = contact_type == "Frictional"
