@@ -16,6 +16,21 @@ DATA = Path(__file__).parent / "data"
 YOUNG, POISSON, DENSITY = 1000.0, 0.3, 1.0
 
 
+def solver_settings(
+    solver_type: str | None, domain_size: int, time_step: float, /, **changes: Any
+) -> dict[str, Any]:
+    """``solver_settings`` of a "Structure" built in Python, then ``changes`` (keys in order)."""
+    settings: dict[str, Any] = {} if solver_type is None else {"solver_type": solver_type}
+    settings |= {
+        "model_part_name": "Structure",
+        "domain_size": domain_size,
+        "model_import_settings": {"input_type": "use_input_model_part"},
+        "time_stepping": {"time_step": time_step},
+    }
+    settings.update(changes)
+    return settings
+
+
 def node_coordinates(mdpa: Path) -> dict[int, tuple[float, float]]:
     """Read the nodes of an mdpa file: id -> (x, y)."""
     model = ca.Model()

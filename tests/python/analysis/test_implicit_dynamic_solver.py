@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 import pytest
+from analysis_cases import solver_settings
 
 import contact_app as ca
 from contact_app.analysis.solvers import ImplicitMechanicalSolver
@@ -12,14 +13,7 @@ from contact_app.parameters import Parameters
 
 
 def _solver(**changes: Any) -> ImplicitMechanicalSolver:
-    settings: dict[str, Any] = {
-        "solver_type": "Dynamic",
-        "model_part_name": "Structure",
-        "domain_size": 2,
-        "model_import_settings": {"input_type": "use_input_model_part"},
-        "time_stepping": {"time_step": 0.1},
-    }
-    settings.update(changes)
+    settings = solver_settings("Dynamic", 2, 0.1, **changes)
     return ImplicitMechanicalSolver(ca.Model(), Parameters(settings, source="case.json"))
 
 

@@ -6,6 +6,7 @@ import logging
 from typing import Any
 
 import pytest
+from analysis_cases import solver_settings
 
 import contact_app as ca
 from contact_app.analysis.solvers import StaticMechanicalSolver
@@ -13,14 +14,7 @@ from contact_app.parameters import Parameters
 
 
 def _settings(**changes: Any) -> Parameters:
-    settings: dict[str, Any] = {
-        "solver_type": "Static",
-        "model_part_name": "Structure",
-        "domain_size": 2,
-        "model_import_settings": {"input_type": "use_input_model_part"},
-        "time_stepping": {"time_step": 0.1},
-    }
-    settings.update(changes)
+    settings = solver_settings("Static", 2, 0.1, **changes)
     return Parameters(settings, source="case.json", path=("solver_settings",))
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 import pytest
+from analysis_cases import solver_settings
 
 import contact_app as ca
 from contact_app.analysis.solvers import (
@@ -17,13 +18,7 @@ from contact_app.parameters import Parameters
 
 
 def _settings(**changes: Any) -> Parameters:
-    settings: dict[str, Any] = {
-        "model_part_name": "Structure",
-        "domain_size": 3,
-        "model_import_settings": {"input_type": "use_input_model_part"},
-        "time_stepping": {"time_step": 1.0},
-    }
-    settings.update(changes)
+    settings = solver_settings(None, 3, 1.0, **changes)
     return Parameters(settings, source="case.json", path=("solver_settings",))
 
 
