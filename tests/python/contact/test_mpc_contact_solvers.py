@@ -32,13 +32,18 @@ def _parameters(mpc: dict | None = None, top: str = "-2.0e-1*t") -> Parameters:
     return parameters
 
 
-def _run(parameters: Parameters) -> StructuralMechanicsAnalysis:
-    analysis = StructuralMechanicsAnalysis(
+def _analysis(parameters: Parameters) -> StructuralMechanicsAnalysis:
+    """A quiet analysis of ``parameters`` on the files of the Kratos MPC contact cases."""
+    return StructuralMechanicsAnalysis(
         ca.Model(),
         parameters,
         base_dir=CASES_DIR / "mpc_contact_tests",
         reporter=Reporter(quiet=True),
     )
+
+
+def _run(parameters: Parameters) -> StructuralMechanicsAnalysis:
+    analysis = _analysis(parameters)
     analysis.Run()
     return analysis
 
@@ -172,12 +177,7 @@ def _frictional_run(mu: float) -> ca.ModelPart:
     process = parameters["processes"]["contact_process_list"][0]["Parameters"]
     process.AddValue("contact_type", "Frictional")
     parameters["solver_settings"].AddValue("buffer_size", 3)
-    analysis = StructuralMechanicsAnalysis(
-        ca.Model(),
-        parameters,
-        base_dir=CASES_DIR / "mpc_contact_tests",
-        reporter=Reporter(quiet=True),
-    )
+    analysis = _analysis(parameters)
     analysis.Initialize()
     for node in analysis.model.GetModelPart("Structure.Contact").Nodes:
         node.SetValue(ca.FRICTION_COEFFICIENT, mu)
