@@ -5,10 +5,19 @@ Imported by the tests as ``contact_cases`` (pytest puts this folder on ``sys.pat
 
 from __future__ import annotations
 
+import json
+import shutil
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 from process_descriptors import core_process, hold_displacement
+
+import contact_app as ca
+from contact_app.analysis import StructuralMechanicsAnalysis
+from contact_app.analysis.reporting import Reporter
+from contact_app.parameters import Parameters
+
+AnalysisT = TypeVar("AnalysisT", bound=StructuralMechanicsAnalysis)
 
 CONTACT_APPLICATION = "KratosMultiphysics.ContactStructuralMechanicsApplication"
 
@@ -79,3 +88,29 @@ def static_contact_solver(
         "convergence_criterion": "contact_residual_criterion",
         **extra,
     }
+
+
+def copied_case_parameters(source: Path, directory: Path, end_time: float) -> dict[str, Any]:
+    """Copy the case folder ``source`` to ``directory``; its ProjectParameters, shortened.
+
+    The returned parameters end at ``end_time`` and write no output.
+    """
+    shutil.copytree(source, directory)
+    parameters = json.loads((directory / "ProjectParameters.json").read_text())
+    parameters["problem_data"]["end_time"] = end_time
+    parameters["output_processes"] = {}
+    return parameters
+
+
+def run_quietly(
+    analysis_type: type[AnalysisT], parameters: dict[str, Any], base_dir: Path
+) -> AnalysisT:
+    """Run ``analysis_type`` on ``parameters`` (files relative to ``base_dir``), nothing printed."""
+    analysis = analysis_type(
+        ca.Model(),
+        Parameters(json.dumps(parameters)),
+        base_dir=base_dir,
+        reporter=Reporter(quiet=True),
+    )
+    analysis.Run()
+    return analysis

@@ -8,16 +8,13 @@ bit-identical runs. Here the first 20 steps (t = 0.02) run with each value.
 
 from __future__ import annotations
 
-import json
-import shutil
 from pathlib import Path
 
 import pytest
+from contact_cases import copied_case_parameters, run_quietly
 
 import contact_app as ca
 from contact_app.analysis import StructuralMechanicsAnalysis
-from contact_app.analysis.reporting import Reporter
-from contact_app.parameters import Parameters
 
 PRESS_FIT = (
     Path(__file__).resolve().parents[3].parent / "shared/kratos_examples/press_fit/source/2D"
@@ -27,21 +24,11 @@ pytestmark = pytest.mark.skipif(not PRESS_FIT.is_dir(), reason="../shared/kratos
 
 
 def _run(directory: Path, mu: float) -> StructuralMechanicsAnalysis:
-    shutil.copytree(PRESS_FIT, directory)
-    parameters = json.loads((directory / "ProjectParameters.json").read_text())
-    parameters["problem_data"]["end_time"] = 0.02
-    parameters["output_processes"] = {}
+    parameters = copied_case_parameters(PRESS_FIT, directory, 0.02)
     parameters["processes"]["contact_process_list"][0]["Parameters"]["friction_coefficients"] = {
         "0": mu
     }
-    analysis = StructuralMechanicsAnalysis(
-        ca.Model(),
-        Parameters(json.dumps(parameters)),
-        base_dir=directory,
-        reporter=Reporter(quiet=True),
-    )
-    analysis.Run()
-    return analysis
+    return run_quietly(StructuralMechanicsAnalysis, parameters, directory)
 
 
 def test_press_fit_uses_the_friction_coefficient_of_its_contact_process(tmp_path: Path) -> None:

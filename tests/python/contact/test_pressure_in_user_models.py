@@ -11,16 +11,14 @@ the median at step 78 (Kratos: 2.3), with the same reaction. Compared step by st
 from __future__ import annotations
 
 import json
-import shutil
 from pathlib import Path
 
 import pytest
+from contact_cases import copied_case_parameters, run_quietly
 from contact_pressure_record import step_record
 
 import contact_app as ca
 from contact_app.analysis import StructuralMechanicsAnalysis
-from contact_app.analysis.reporting import Reporter
-from contact_app.parameters import Parameters
 
 CASE = (
     Path(__file__).resolve().parents[3].parent
@@ -52,17 +50,8 @@ class _Recording(StructuralMechanicsAnalysis):
 def test_sliding_cylinders_pressure_field_matches_the_reference(tmp_path: Path) -> None:
     oracle = json.loads(ORACLE.read_text())
     directory = tmp_path / "case"
-    shutil.copytree(CASE, directory)
-    parameters = json.loads((directory / "ProjectParameters.json").read_text())
-    parameters["problem_data"]["end_time"] = oracle["end_time"]
-    parameters["output_processes"] = {}
-    analysis = _Recording(
-        ca.Model(),
-        Parameters(json.dumps(parameters)),
-        base_dir=directory,
-        reporter=Reporter(quiet=True),
-    )
-    analysis.Run()
+    parameters = copied_case_parameters(CASE, directory, oracle["end_time"])
+    analysis = run_quietly(_Recording, parameters, directory)
     assert all(step.converged for step in analysis.reporter.steps)
     ours = {record["step"]: record for record in analysis.history}
     reference = {record["step"]: record for record in oracle["history"]}
