@@ -38,29 +38,30 @@ def test_exceptions_are_public_exception_classes(error: str) -> None:
     assert cls.__module__ == "contact_app" and cls.__name__ == error
 
 
+def _assert_every_pair_registered(names: set[str], family: str, nv_family: str) -> None:
+    """``family`` and its normal-variation twin have a mortar contact condition of every pair."""
+    for pair in ("2D2N", "3D3N", "3D4N", "3D3N4N", "3D4N3N"):
+        assert f"{family}MortarContactCondition{pair}" in names
+        assert f"{nv_family}MortarContactCondition{pair}" in names
+
+
 def test_package_registers_the_alm_frictionless_contact_conditions() -> None:
     names = set(ca.registered_conditions())
-    for pair in ("2D2N", "3D3N", "3D4N", "3D3N4N", "3D4N3N"):
-        assert f"ALMFrictionlessMortarContactCondition{pair}" in names
-        assert f"ALMNVFrictionlessMortarContactCondition{pair}" in names
+    _assert_every_pair_registered(names, "ALMFrictionless", "ALMNVFrictionless")
     assert "ALMFrictionlessAxisymMortarContactCondition2D2N" in names
     assert "ALMNVFrictionlessAxisymMortarContactCondition2D2N" in names
 
 
 def test_package_registers_the_alm_frictionless_components_contact_conditions() -> None:
     names = set(ca.registered_conditions())
-    for pair in ("2D2N", "3D3N", "3D4N", "3D3N4N", "3D4N3N"):
-        assert f"ALMFrictionlessComponentsMortarContactCondition{pair}" in names
-        assert f"ALMNVFrictionlessComponentsMortarContactCondition{pair}" in names
+    _assert_every_pair_registered(names, "ALMFrictionlessComponents", "ALMNVFrictionlessComponents")
     assert not any("FrictionlessComponentsAxisym" in name for name in names)
     assert sum("FrictionlessComponents" in name for name in names) == 10
 
 
 def test_package_registers_the_penalty_frictionless_contact_conditions() -> None:
     names = set(ca.registered_conditions())
-    for pair in ("2D2N", "3D3N", "3D4N", "3D3N4N", "3D4N3N"):
-        assert f"PenaltyFrictionlessMortarContactCondition{pair}" in names
-        assert f"PenaltyNVFrictionlessMortarContactCondition{pair}" in names
+    _assert_every_pair_registered(names, "PenaltyFrictionless", "PenaltyNVFrictionless")
     assert "PenaltyFrictionlessAxisymMortarContactCondition2D2N" in names
     # All 68 documented contact names (58 contact families + 5 mesh tying + 5 MPC), the constraint.
     contact = [n for n in names if "MortarContactCondition" in n or n.startswith("MeshTying")]
