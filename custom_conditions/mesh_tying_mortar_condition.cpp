@@ -106,7 +106,8 @@ void TYING_CLASS::Initialize(const ProcessInfo& rCurrentProcessInfo) {
     PairNormals<TDim, TNS>(*this, slave, x1, center, normals);
     const MortarIntegrator<TDim, TNS, TNM, double> integrator(
         pair_settings::IntegrationSettingsFrom(pGetProperties()),
-        pair_settings::SegmentationSettingsFrom(rCurrentProcessInfo, pGetProperties()));
+        pair_settings::PairSegmentationSettings<TDim, TNS, TNM>(rCurrentProcessInfo, pGetProperties(),
+                                                                GetParentGeometry(), GetPairedGeometry()));
     const auto pair = IntegrateMortarPair<TDim, TNS, TNM>(integrator, x1, center, x2, normals, true);
     // B5: a dimensionless overlap ratio instead of the reference's area / area² test.
     if (!pair.used || pair.area <= MinimumOverlapRatio * slave.DomainSize()) return Set(ACTIVE, false);

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_conditions/mortar_contact_condition.h"
 
-#include <cmath>
-#include <limits>
 #include <type_traits>
 
 #include "automatic_differentiation/ad_helpers.h"
@@ -200,33 +198,8 @@ MortarIntegrationSettings MORTAR_CLASS::IntegrationSettings() const {
 
 MORTAR_TEMPLATE
 SegmentationSettings MORTAR_CLASS::SegmentationSettingsFrom(const ProcessInfo& rCurrentProcessInfo) const {
-    SegmentationSettings settings = pair_settings::SegmentationSettingsFrom(rCurrentProcessInfo, pGetProperties());
-    if (!std::isfinite(settings.distance_threshold) || settings.distance_threshold >= 1.0e24) return settings;
-    // The step's verdict replaces the per-pass test: no master node fails an infinite threshold, all fail −∞.
-    settings.distance_threshold = WithinDistanceAtStepStart(settings.distance_threshold)
-                                      ? std::numeric_limits<double>::infinity()
-                                      : -std::numeric_limits<double>::infinity();
-    return settings;
-}
-
-MORTAR_TEMPLATE
-bool MORTAR_CLASS::WithinDistanceAtStepStart(double threshold) const {
-    const Geometry& slave = GetParentGeometry();
-    const Geometry& master = GetPairedGeometry();
-    // As the passes: on a mesh that follows X0 + u the start-of-step X0 + u(1); on a fixed mesh (move_mesh_flag false,
-    // or coordinates set by hand) the mesh coordinates, which no iterate moves.
-    bool slave_follows = true, master_follows = true;
-    CurrentCoordinates<TDim, TNS>(slave, &slave_follows);
-    CurrentCoordinates<TDim, TNM>(master, &master_follows);
-    const bool start_of_step =
-        slave_follows && master_follows && slave[0].GetBufferSize() > 1 && master[0].GetBufferSize() > 1;
-    const auto x1 = start_of_step ? CoordinatesAtStep<TDim, TNS>(slave, 1) : MeshCoordinates<TDim, TNS>(slave);
-    const auto x2 = start_of_step ? CoordinatesAtStep<TDim, TNM>(master, 1) : MeshCoordinates<TDim, TNM>(master);
-    const SpatialVector<double, TDim> normal = FaceCenterUnitNormal<TDim, TNS, double>(x1);
-    const SpatialVector<double, TDim> center = x1.colwise().mean().transpose();
-    for (int j = 0; j < TNM; ++j)
-        if (!((x2.row(j).transpose() - center).dot(normal) <= threshold)) return false;
-    return true;
+    return pair_settings::PairSegmentationSettings<TDim, TNS, TNM>(rCurrentProcessInfo, pGetProperties(),
+                                                                   GetParentGeometry(), GetPairedGeometry());
 }
 
 MORTAR_TEMPLATE

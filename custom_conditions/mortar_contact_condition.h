@@ -117,11 +117,8 @@ public:
     PairNodalShare<TDim, TNumNodes>& MutableNodalShare() { return mNodalShare; }
     /// Mortar integration and segmentation settings from the Properties and the ProcessInfo.
     MortarIntegrationSettings IntegrationSettings() const;
-    /// The segmentation settings of this pair's passes. The distance rule (a master node farther than
-    /// DISTANCE_THRESHOLD in front of the slave face → no cells) is decided on the start-of-step configuration
-    /// (WithinDistanceAtStepStart), so it holds for every pass of the step: decided on each iterate it switched whole
-    /// pairs on and off between Newton iterates (docs/theory/mortar.md §1 "The distance rule"). The returned
-    /// distance_threshold is +∞ (within) or −∞ (beyond), or the ProcessInfo's value when that is ≥ 1e24 (no rule).
+    /// The segmentation settings of this pair's passes (pair_settings::PairSegmentationSettings: the distance rule
+    /// decided on the start-of-step configuration, docs/theory/mortar.md §1 "The distance rule").
     SegmentationSettings SegmentationSettingsFrom(const ProcessInfo& rCurrentProcessInfo) const;
 
 protected:
@@ -148,12 +145,6 @@ private:
 
     /// ∂RHS/∂n of the slave nodes' normals (MatrixSize × d n_s) of the last tangent evaluation; empty when not recorded.
     Matrix mForcePerNormal;
-
-    /// Whether every master node lies at most @p threshold in front of the slave face (along its centre normal, from
-    /// its node average) at the start of the step: X0 + u(1) on a mesh that follows the displacement, the mesh
-    /// coordinates on a fixed mesh or with a buffer of 1.
-    /// @param threshold DISTANCE_THRESHOLD of the ProcessInfo
-    bool WithinDistanceAtStepStart(double threshold) const;
 
     void CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const ProcessInfo& rCurrentProcessInfo);
     /// The second AD pass of a tangent evaluation whose nodal normals follow the iterate: the residual with the normals

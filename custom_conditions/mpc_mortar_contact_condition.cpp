@@ -111,7 +111,8 @@ typename MPC_CLASS::Operators MPC_CLASS::CurrentOperators(const ProcessInfo& rCu
     const Geometry& slave = GetParentGeometry();
     const MortarIntegrator<TDim, TNS, TNM, double> integrator(
         pair_settings::IntegrationSettingsFrom(pGetProperties()),
-        pair_settings::SegmentationSettingsFrom(rCurrentProcessInfo, pGetProperties()));
+        pair_settings::PairSegmentationSettings<TDim, TNS, TNM>(rCurrentProcessInfo, pGetProperties(),
+                                                                GetParentGeometry(), GetPairedGeometry()));
     return ComputePreviousMortarOperators<TDim, TNS, TNM>(
         integrator, CurrentCoordinates<TDim, TNS>(slave), ToSpatialVector<TDim>(GetValue(NORMAL)),
         CurrentCoordinates<TDim, TNM>(GetPairedGeometry()), NodalNormals<TDim, TNS>(slave), dual);
@@ -395,7 +396,8 @@ void MPC_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) 
     const Geometry& master = GetPairedGeometry();
     const MortarIntegrator<TDim, TNS, TNM, double> integrator(
         pair_settings::IntegrationSettingsFrom(pGetProperties()),
-        pair_settings::SegmentationSettingsFrom(rCurrentProcessInfo, pGetProperties()));
+        pair_settings::PairSegmentationSettings<TDim, TNS, TNM>(rCurrentProcessInfo, pGetProperties(),
+                                                                GetParentGeometry(), GetPairedGeometry()));
     ExplicitContributionOptions options;
     options.compute_nodal_area = true;  // as the penalty conditions: NODAL_AREA normalises the constraint gap
     const auto x1 = CurrentCoordinates<TDim, TNS>(slave);
