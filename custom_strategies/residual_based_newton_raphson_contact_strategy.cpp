@@ -78,6 +78,11 @@ void ResidualBasedNewtonRaphsonContactStrategy::AfterSolutionUpdate() {
     ComputeExplicitContributions();
 }
 
+void ResidualBasedNewtonRaphsonContactStrategy::RefreshBeforeBuild() {
+    ComputeExplicitContributions();
+    NewtonRaphsonStrategy::RefreshBeforeBuild();
+}
+
 bool ResidualBasedNewtonRaphsonContactStrategy::SolveSolutionStep() {
     ProcessInfo& info = mModelPart.GetProcessInfo();
     const bool full_semi_smooth = mModelPart.IsNotDefined(INTERACTION) || mModelPart.Is(INTERACTION);

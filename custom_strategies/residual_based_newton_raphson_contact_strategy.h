@@ -47,6 +47,8 @@ protected:
     void BeforeReferenceResidual() override;
     void PredictUnknowns() override;
     void AfterSolutionUpdate() override;
+    /// The nodal sums of the pairs, then the criteria's normal and tangent refresh.
+    void RefreshBeforeBuild() override;
 
 private:
     void ComputeExplicitContributions();

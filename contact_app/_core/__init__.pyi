@@ -2567,6 +2567,10 @@ class ResidualBasedNewtonRaphsonStrategy(SolvingStrategy):
     """
     Full Newton–Raphson (LHS rebuilt every iteration).
     """
+    def CheckTangentAlong(self, direction: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"] | None = None, step: typing.SupportsFloat | typing.SupportsIndex = 1e-07) -> tuple[typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"], typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"], typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]]:
+        """
+        (A v, −(b(x+hv) − b(x−hv))/2h, v) at the current iterate, fixed DoFs zero; direction None: the Newton correction. A developer's check of the assembled tangent (docs/theory/structural.md §6).
+        """
     def GetMaxIterationNumber(self) -> int:
         ...
     def IterationHistory(self) -> list[str]:

@@ -295,7 +295,16 @@ void BindStrategies(py::module_& m) {
              py::arg("move_mesh_flag") = true, py::keep_alive<1, 2>())
         .def("GetMaxIterationNumber", &NewtonRaphsonStrategy::GetMaxIterationNumber)
         .def("SetMaxIterationNumber", &NewtonRaphsonStrategy::SetMaxIterationNumber, py::arg("max_iteration"))
-        .def("IterationHistory", &NewtonRaphsonStrategy::IterationHistory, "Criterion norms per iteration of the last step.");
+        .def("IterationHistory", &NewtonRaphsonStrategy::IterationHistory, "Criterion norms per iteration of the last step.")
+        .def(
+            "CheckTangentAlong",
+            [](NewtonRaphsonStrategy& self, std::optional<SystemVectorType> direction, double step) {
+                auto check = self.CheckTangentAlong(direction ? std::move(*direction) : SystemVectorType(), step);
+                return py::make_tuple(check.tangent_times_direction, check.central_difference, check.direction);
+            },
+            py::arg("direction") = py::none(), py::arg("step") = 1e-7,
+            "(A v, −(b(x+hv) − b(x−hv))/2h, v) at the current iterate, fixed DoFs zero; direction None: the Newton "
+            "correction. A developer's check of the assembled tangent (docs/theory/structural.md §6).");
     py::class_<LineSearchStrategy, NewtonRaphsonStrategy, std::shared_ptr<LineSearchStrategy>>(
         m, "LineSearchStrategy", "Newton–Raphson with a secant line search.")
         .def(py::init([](ModelPart& part, Scheme::Pointer scheme, ConvergenceCriteria::Pointer criteria,

@@ -77,6 +77,56 @@ bool NewtonRaphsonStrategy::SolveSolutionStep() {
     return converged;
 }
 
+void NewtonRaphsonStrategy::RefreshBeforeBuild() {
+    mCriteria->PreCriteria(mModelPart, mBuilder->GetDofSet(), mA, mDx, mB);
+}
+
+NewtonRaphsonStrategy::TangentCheck NewtonRaphsonStrategy::CheckTangentAlong(SystemVectorType direction,
+                                                                                 double step) {
+    CONTACT_CHECK(step > 0.0, InputError, "CheckTangentAlong: the step h must be positive, got ", step);
+    CONTACT_CHECK(mModelPart.MasterSlaveConstraints().empty(), InputError,
+                  "CheckTangentAlong: the model part ", mModelPart.FullName(),
+                  " has multipoint constraints, whose transformed system the check does not follow");
+    SetUpSystemIfNeeded();
+    const auto n = static_cast<Eigen::Index>(mBuilder->GetEquationSystemSize());
+    CONTACT_CHECK(direction.size() == 0 || direction.size() == n, InputError, "CheckTangentAlong: the direction has ",
+                  direction.size(), " entries, the system ", n);
+    if (mA.rows() != n) mBuilder->ResizeAndInitializeVectors(*mScheme, mA, mDx, mB, mModelPart);
+    const auto& dofs = mBuilder->GetDofSet();
+    auto zero_fixed = [&](SystemVectorType& rVector) {
+        for (const auto& dof : dofs)
+            if (dof->IsFixed() && static_cast<Eigen::Index>(dof->EquationId()) < n) rVector[dof->EquationId()] = 0.0;
+    };
+    RefreshBeforeBuild();
+    mBuilder->Build(*mScheme, mModelPart, mA, mB);
+    mBuilder->ApplyDirichletConditions(*mScheme, mModelPart, mA, mDx, mB);
+    if (direction.size() == 0) {
+        mBuilder->SystemSolve(mA, mDx, mB);
+        direction = mDx;
+    }
+    zero_fixed(direction);
+    TangentCheck check;
+    check.tangent_times_direction = mA * direction;
+    zero_fixed(check.tangent_times_direction);
+    auto rhs_at_shift = [&](double shift) {
+        mDx = shift * direction;
+        NewtonRaphsonStrategy::UpdateSolution();  // the plain update, not a line search
+        RefreshBeforeBuild();
+        SystemVectorType rhs = SystemVectorType::Zero(n);
+        mBuilder->BuildRHS(*mScheme, mModelPart, rhs);
+        mDx = -shift * direction;
+        NewtonRaphsonStrategy::UpdateSolution();
+        return rhs;
+    };
+    const SystemVectorType plus = rhs_at_shift(step);
+    const SystemVectorType minus = rhs_at_shift(-step);
+    RefreshBeforeBuild();
+    check.central_difference = -(plus - minus) / (2.0 * step);
+    zero_fixed(check.central_difference);
+    check.direction = std::move(direction);
+    return check;
+}
+
 void NewtonRaphsonStrategy::FinalizeSolutionStep() {
     SolvingStrategy::FinalizeSolutionStep();
     mCriteria->FinalizeSolutionStep(mModelPart, mBuilder->GetDofSet(), mA, mDx, mB);

@@ -35,6 +35,20 @@ public:
     /// One line per iteration of the last step: the criterion's norms.
     const std::vector<std::string>& IterationHistory() const { return mHistory; }
 
+    /// A(x) v and the central difference −(b(x + hv) − b(x − hv)) / 2h of the RHS at the current iterate x (a check of
+    /// a whole model's tangent, docs/theory/structural.md §6 "Checking the assembled tangent"), both zero on the fixed
+    /// DoFs. What the residual reads besides the unknowns is refreshed at every state as before a build
+    /// (RefreshBeforeBuild); the state is restored afterwards (round-off aside).
+    struct TangentCheck {
+        SystemVectorType tangent_times_direction;
+        SystemVectorType central_difference;
+        SystemVectorType direction;  ///< v as used: fixed entries zeroed, or the Newton correction
+    };
+    /// @param[in] direction v over the equation ids; empty: the Newton correction A(x)⁻¹ b(x)
+    /// @param[in] step h, in the units of the unknowns
+    /// @throws InputError for a model with active multipoint constraints, a wrong size or h ≤ 0
+    TangentCheck CheckTangentAlong(SystemVectorType direction, double step);
+
 protected:
     /// Updates the unknowns with Δx (line search overrides it).
     virtual void UpdateSolution();
@@ -45,6 +59,9 @@ protected:
     /// Called after the entities' InitializeSolutionStep, before the step's reference residual: data the residual
     /// reads besides the unknowns (contact: the nodal weighted gaps of new pairs). Does nothing by default.
     virtual void BeforeReferenceResidual() {}
+    /// What an iteration refreshes before its build besides the unknowns (the criterion's PreCriteria; contact: also
+    /// the nodal sums), for CheckTangentAlong's perturbed states.
+    virtual void RefreshBeforeBuild();
     /// One Newton iteration: build, solve, update, move mesh, hooks. Returns the criterion's verdict.
     bool Iterate();
 

@@ -7,7 +7,11 @@ from structure_model_part import create_structure
 import contact_app as ca
 
 
-def _plate(model: ca.Model, law: str = "LinearElasticPlaneStress2DLaw") -> ca.ModelPart:
+def _plate(
+    model: ca.Model,
+    law: str = "LinearElasticPlaneStress2DLaw",
+    element: str = "SmallDisplacementElement2D4N",
+) -> ca.ModelPart:
     """Build a 2 x 1 plate of 4 x 2 distorted bilinear quads (E = 200, nu = 0.3, t = 1)."""
     mp, props = create_structure(model, 2, 200.0, law, thickness=1.0)
     nx, ny = 4, 2
@@ -21,7 +25,7 @@ def _plate(model: ca.Model, law: str = "LinearElasticPlaneStress2DLaw") -> ca.Mo
         for i in range(nx):
             n0 = 1 + i + j * (nx + 1)
             nodes = [n0, n0 + 1, n0 + 1 + nx + 1, n0 + nx + 1]
-            mp.CreateNewElement("SmallDisplacementElement2D4N", element_id, nodes, props)
+            mp.CreateNewElement(element, element_id, nodes, props)
             element_id += 1
     for node in mp.Nodes:
         node.AddDof(ca.DISPLACEMENT_X, ca.REACTION_X)
