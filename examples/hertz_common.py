@@ -142,14 +142,22 @@ def write_gmsh(path: Path, mesh: meshio.Mesh, binary: bool) -> meshio.Mesh:
     return mesh
 
 
+def mesh_parser(
+    doc: str, refinement_type: type, output: Path, levels: str = "1 = coarsest (default 2)"
+) -> argparse.ArgumentParser:
+    """The parser of ``--refinement`` (default 2, help ``levels``) and ``--output`` (``output``).
+
+    A mesh script with options of its own adds them to it (hertz_3d's ``--check``).
+    """
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
+    parser.add_argument("--refinement", type=refinement_type, default=2, help=levels)
+    parser.add_argument("--output", type=Path, default=output)
+    return parser
+
+
 def mesh_arguments(doc: str, refinement_type: type, output: Path) -> argparse.Namespace:
     """``--refinement`` (default 2) and ``--output`` (default ``output``) of a mesh script."""
-    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
-    parser.add_argument(
-        "--refinement", type=refinement_type, default=2, help="1 = coarsest (default 2)"
-    )
-    parser.add_argument("--output", type=Path, default=output)
-    return parser.parse_args()
+    return mesh_parser(doc, refinement_type, output).parse_args()
 
 
 def fit_elliptic_profile(c: np.ndarray, p: np.ndarray, shape: str) -> tuple[float, float]:

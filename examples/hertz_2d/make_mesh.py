@@ -17,7 +17,6 @@ Physical groups (gmsh names; ProjectParameters' mesh_mapping gives them their Kr
 
 from __future__ import annotations
 
-import argparse
 import math
 import sys
 from pathlib import Path
@@ -26,7 +25,13 @@ import meshio
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
-from hertz_common import gmsh_mesh, graded, subdivide  # noqa: E402  (examples/hertz_common.py)
+from hertz_common import (  # noqa: E402  (examples/hertz_common.py)
+    gmsh_mesh,
+    graded,
+    mesh_arguments,
+    subdivide,
+    write_gmsh,
+)
 
 RADIUS = 10.0
 FOUNDATION_WIDTH = 2.0 * RADIUS
@@ -186,16 +191,11 @@ def contact_spacing(refinement: int) -> float:
 
 def write_mesh(path: Path, refinement: int) -> meshio.Mesh:
     """Build the mesh of level ``refinement`` and write it to ``path`` (gmsh 2.2, ASCII)."""
-    mesh = build(refinement)
-    meshio.write(str(path), mesh, file_format="gmsh22", binary=False)
-    return mesh
+    return write_gmsh(path, build(refinement), binary=False)
 
 
 if __name__ == "__main__":
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--refinement", type=int, default=2, help="1 = coarsest (default 2)")
-    parser.add_argument("--output", type=Path, default=Path(__file__).with_name("hertz_2d.msh"))
-    args = parser.parse_args()
+    args = mesh_arguments(__doc__, int, Path(__file__).with_name("hertz_2d.msh"))
     written = write_mesh(args.output, args.refinement)
     quads = sum(len(block.data) for block in written.cells if block.type == "quad")
     print(

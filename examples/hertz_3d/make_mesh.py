@@ -21,7 +21,6 @@ gmsh points (meshio ``vertex`` cells); the contact process builds the interface 
 
 from __future__ import annotations
 
-import argparse
 import sys
 from dataclasses import dataclass
 from pathlib import Path
@@ -30,7 +29,13 @@ import meshio
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
-from hertz_common import gmsh_mesh, graded, subdivide  # noqa: E402  (examples/hertz_common.py)
+from hertz_common import (  # noqa: E402  (examples/hertz_common.py)
+    gmsh_mesh,
+    graded,
+    mesh_parser,
+    subdivide,
+    write_gmsh,
+)
 
 RADIUS = 10.0
 FOUNDATION_WIDTH = RADIUS  # L
@@ -240,20 +245,16 @@ def quality(mesh: meshio.Mesh) -> tuple[float, float]:
 
 def write_mesh(path: Path, refinement: float) -> meshio.Mesh:
     """Build the mesh of level ``refinement`` and write it to ``path`` (gmsh 2.2, binary)."""
-    mesh = build(refinement)
-    meshio.write(str(path), mesh, file_format="gmsh22", binary=True)
-    return mesh
+    return write_gmsh(path, build(refinement), binary=True)
 
 
 if __name__ == "__main__":
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument(
-        "--refinement",
-        type=float,
-        default=2,
-        help="1 = coarsest (default 2); a fractional level is an intermediate mesh",
+    parser = mesh_parser(
+        __doc__,
+        float,
+        Path(__file__).with_name("hertz_3d.msh"),
+        "1 = coarsest (default 2); a fractional level is an intermediate mesh",
     )
-    parser.add_argument("--output", type=Path, default=Path(__file__).with_name("hertz_3d.msh"))
     parser.add_argument("--check", action="store_true", help="only print sizes and quality")
     args = parser.parse_args()
     written = build(args.refinement) if args.check else write_mesh(args.output, args.refinement)
