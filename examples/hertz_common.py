@@ -239,6 +239,16 @@ def mesh_script(folder: Path):
     return load_script(f"{folder.name}_make_mesh", folder / "make_mesh.py")
 
 
+def output_names(folder: Path, figure: str) -> tuple[str, str, str]:
+    """(mesh, plot, summary) file names of the example ``folder``, whose plot shows ``figure``.
+
+    ``<name>.msh``, ``<name>_<figure>.png`` and ``<name>_summary.txt`` for the folder's name: the
+    names the example tests look for.
+    """
+    name = folder.name
+    return f"{name}.msh", f"{name}_{figure}.png", f"{name}_summary.txt"
+
+
 def contact_parameters(parameters: dict) -> dict:
     """The Parameters block of the ALM contact process of a ProjectParameters tree."""
     for process in parameters["processes"]["contact_process_list"]:

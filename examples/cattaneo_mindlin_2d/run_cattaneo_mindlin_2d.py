@@ -56,9 +56,7 @@ import hertz_common as common  # noqa: E402  (examples/hertz_common.py)
 
 make_mesh = common.mesh_script(HERE)
 
-MESH = "cattaneo_mindlin_2d.msh"
-PLOT = "cattaneo_mindlin_2d_traction.png"
-SUMMARY = "cattaneo_mindlin_2d_summary.txt"
+MESH, PLOT, SUMMARY = common.output_names(HERE, "traction")
 DEFAULT_REFINEMENT = 2
 EXAMPLE = partial_slip.MeshedExample(HERE, MESH, DEFAULT_REFINEMENT, make_mesh.write_mesh)
 DEFAULT_RATIO = 0.5  # Q'/(mu P'): c/a = sqrt(0.5) = 0.707

@@ -59,9 +59,7 @@ import hertz_common as common  # noqa: E402  (examples/hertz_common.py)
 
 make_mesh = common.mesh_script(HERE)
 
-MESH = "cattaneo_mindlin_3d.msh"
-PLOT = "cattaneo_mindlin_3d_traction.png"
-SUMMARY = "cattaneo_mindlin_3d_summary.txt"
+MESH, PLOT, SUMMARY = common.output_names(HERE, "traction")
 DEFAULT_REFINEMENT = 2
 EXAMPLE = partial_slip.MeshedExample(HERE, MESH, DEFAULT_REFINEMENT, make_mesh.write_mesh)
 DEFAULT_RATIO = 0.5  # Q/(mu P): c/a = 0.5^(1/3) = 0.794

@@ -37,9 +37,7 @@ import hertz_common as common  # noqa: E402  (examples/hertz_common.py)
 
 make_mesh = common.mesh_script(HERE)
 
-MESH = "hertz_2d.msh"
-PLOT = "hertz_2d_pressure.png"
-SUMMARY = "hertz_2d_summary.txt"
+MESH, PLOT, SUMMARY = common.output_names(HERE, "pressure")
 DEFAULT_REFINEMENT = 2
 
 
@@ -54,12 +52,12 @@ class HertzResult(common.HertzRun):
     @property
     def b_error(self) -> float:
         """Relative error of the half-width (moment estimate)."""
-        return abs(self.b - self.b_analytic) / self.b_analytic
+        return common.relative_error(self.b, self.b_analytic)
 
     @property
     def b_fit_error(self) -> float:
         """Relative error of the fitted half-width."""
-        return abs(self.b_fit - self.b_analytic) / self.b_analytic
+        return common.relative_error(self.b_fit, self.b_analytic)
 
 
 def fit_semi_ellipse(x: np.ndarray, p: np.ndarray) -> tuple[float, float]:

@@ -38,9 +38,7 @@ import hertz_common as common  # noqa: E402  (examples/hertz_common.py)
 
 make_mesh = common.mesh_script(HERE)
 
-MESH = "hertz_3d.msh"
-PLOT = "hertz_3d_pressure.png"
-SUMMARY = "hertz_3d_summary.txt"
+MESH, PLOT, SUMMARY = common.output_names(HERE, "pressure")
 DEFAULT_REFINEMENT = 2
 
 
@@ -58,17 +56,17 @@ class HertzResult(common.HertzRun):
     @property
     def a_error(self) -> float:
         """Relative error of the contact radius (moment estimate)."""
-        return abs(self.a - self.a_analytic) / self.a_analytic
+        return common.relative_error(self.a, self.a_analytic)
 
     @property
     def a_fit_error(self) -> float:
         """Relative error of the fitted contact radius."""
-        return abs(self.a_fit - self.a_analytic) / self.a_analytic
+        return common.relative_error(self.a_fit, self.a_analytic)
 
     @property
     def p0_fit_error(self) -> float:
         """Relative error of the fitted peak pressure."""
-        return abs(self.p0_fit - self.p0_analytic) / self.p0_analytic
+        return common.relative_error(self.p0_fit, self.p0_analytic)
 
 
 def fit_half_ellipsoid(r: np.ndarray, p: np.ndarray) -> tuple[float, float]:
