@@ -86,6 +86,14 @@ def create(module: str, parameters: dict[str, Any], model: ca.Model) -> Any:
     return factory(descriptor(module, parameters), model)
 
 
+def create_on(module: str, model: ca.Model, part: str, variable: str, **settings: Any) -> Any:
+    """``create`` the process ``module`` on ``variable`` of the part ``part``, with ``settings``.
+
+    The assignment tests name a part and a variable every time: the other keys are what they vary.
+    """
+    return create(module, {"model_part_name": part, "variable_name": variable, **settings}, model)
+
+
 def run_steps(
     model_part: ca.ModelPart,
     processes: Iterable[Process],

@@ -2,13 +2,16 @@
 
 from __future__ import annotations
 
+from functools import partial
 from pathlib import Path
 
 import pytest
-from conftest import create
+from conftest import create, create_on
 
 import contact_app as ca
 from contact_app.processes.process import Process
+
+_create = partial(create_on, "assign_scalar_variable_process")
 
 
 def _start_step(model_part: ca.ModelPart, process: Process, time: float) -> None:
@@ -23,15 +26,8 @@ def _values(model_part: ca.ModelPart, variable: object) -> dict[int, float]:
 def test_assign_scalar_function_of_time_and_space_per_step(
     model: ca.Model, plate: ca.ModelPart
 ) -> None:
-    process = create(
-        "assign_scalar_variable_process",
-        {
-            "model_part_name": "Structure.Top",
-            "variable_name": "DISPLACEMENT_Y",
-            "value": "-0.1*t + 0.01*x",
-            "interval": [0.0, "End"],
-        },
-        model,
+    process = _create(
+        model, "Structure.Top", "DISPLACEMENT_Y", value="-0.1*t + 0.01*x", interval=[0.0, "End"]
     )
     top = plate.GetSubModelPart("Top")
     process.ExecuteBeforeSolutionLoop()  # applied at the start time
@@ -52,16 +48,8 @@ def test_assign_scalar_function_of_time_and_space_per_step(
 def test_assign_scalar_interval_limits_value_and_fixity(
     model: ca.Model, plate: ca.ModelPart
 ) -> None:
-    process = create(
-        "assign_scalar_variable_process",
-        {
-            "model_part_name": "Bottom",  # bare sub-model-part name, as old Kratos files write it
-            "variable_name": "DISPLACEMENT_X",
-            "value": "t",
-            "interval": [0.4, 0.6],
-        },
-        model,
-    )
+    # A bare sub-model-part name, as old Kratos files write it.
+    process = _create(model, "Bottom", "DISPLACEMENT_X", value="t", interval=[0.4, 0.6])
     node = plate.GetNode(2)
     process.ExecuteBeforeSolutionLoop()
     assert node.GetSolutionStepValue(ca.DISPLACEMENT_X) == 0.0
@@ -79,16 +67,7 @@ def test_assign_scalar_interval_limits_value_and_fixity(
 def test_assign_scalar_unconstrained_writes_value_without_fixing(
     model: ca.Model, plate: ca.ModelPart
 ) -> None:
-    process = create(
-        "assign_scalar_variable_process",
-        {
-            "model_part_name": "Structure.Bottom",
-            "variable_name": "DISPLACEMENT_X",
-            "value": 2.5,
-            "constrained": False,
-        },
-        model,
-    )
+    process = _create(model, "Structure.Bottom", "DISPLACEMENT_X", value=2.5, constrained=False)
     _start_step(plate, process, 1.0)
     bottom = plate.GetSubModelPart("Bottom")
     assert set(_values(bottom, ca.DISPLACEMENT_X).values()) == {2.5}
@@ -98,11 +77,7 @@ def test_assign_scalar_unconstrained_writes_value_without_fixing(
 def test_assign_scalar_fix_adds_a_missing_dof(model: ca.Model, plate: ca.ModelPart) -> None:
     node = plate.GetNode(1)
     assert not node.HasDofFor(ca.DISPLACEMENT_Z)
-    process = create(
-        "assign_scalar_variable_process",
-        {"model_part_name": "Structure.Bottom", "variable_name": "DISPLACEMENT_Z", "value": 0.0},
-        model,
-    )
+    process = _create(model, "Structure.Bottom", "DISPLACEMENT_Z", value=0.0)
     _start_step(plate, process, 1.0)
     assert node.HasDofFor(ca.DISPLACEMENT_Z) and node.IsFixed(ca.DISPLACEMENT_Z)
 
@@ -112,20 +87,8 @@ def test_assign_scalar_csv_table_interpolates_and_extrapolates(
 ) -> None:
     (tmp_path / "table.csv").write_text("time;value\n0.0;0.0\n1.0;2.0\n2.0;3.0\n")
     monkeypatch.chdir(tmp_path)
-    process = create(
-        "assign_scalar_variable_process",
-        {
-            "model_part_name": "Structure.Bottom",
-            "variable_name": "DISPLACEMENT_X",
-            "value": {
-                "name": "csv_table",
-                "filename": "table.csv",
-                "delimiter": ";",
-                "skiprows": 1,
-            },
-        },
-        model,
-    )
+    table = {"name": "csv_table", "filename": "table.csv", "delimiter": ";", "skiprows": 1}
+    process = _create(model, "Structure.Bottom", "DISPLACEMENT_X", value=table)
     node = plate.GetNode(1)
     for time, expected in ((0.25, 0.5), (1.5, 2.5), (3.0, 4.0)):
         _start_step(plate, process, time)
@@ -136,19 +99,9 @@ def test_assign_scalar_csv_table_interpolates_and_extrapolates(
 def test_assign_scalar_local_axes_rotate_the_coordinates(
     model: ca.Model, plate: ca.ModelPart
 ) -> None:
-    process = create(
-        "assign_scalar_variable_process",
-        {
-            "model_part_name": "Structure.Bottom",
-            "variable_name": "DISPLACEMENT_X",
-            "value": "x",  # local x = global y - 1 with these axes
-            "local_axes": {
-                "origin": [0.0, 1.0, 0.0],
-                "axes": [[0.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]],
-            },
-        },
-        model,
-    )
+    axes = {"origin": [0.0, 1.0, 0.0], "axes": [[0.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]}
+    # local x = global y - 1 with these axes
+    process = _create(model, "Structure.Bottom", "DISPLACEMENT_X", value="x", local_axes=axes)
     _start_step(plate, process, 1.0)
     assert set(_values(plate.GetSubModelPart("Bottom"), ca.DISPLACEMENT_X).values()) == {-1.0}
 
@@ -185,8 +138,4 @@ def test_assign_scalar_unknown_model_part_suggests_a_name(
     model: ca.Model, plate: ca.ModelPart
 ) -> None:
     with pytest.raises(ca.InputError, match='did you mean "Structure.Bottom"'):
-        create(
-            "assign_scalar_variable_process",
-            {"model_part_name": "Structure.Botom", "variable_name": "DISPLACEMENT_X"},
-            model,
-        )
+        _create(model, "Structure.Botom", "DISPLACEMENT_X")

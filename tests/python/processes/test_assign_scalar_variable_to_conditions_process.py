@@ -2,22 +2,19 @@
 
 from __future__ import annotations
 
+from functools import partial
+
 import pytest
-from conftest import create
+from conftest import create_on
 
 import contact_app as ca
 
+_create = partial(create_on, "assign_scalar_variable_to_conditions_process")
+
 
 def test_assign_to_conditions_time_function_per_step(model: ca.Model, plate: ca.ModelPart) -> None:
-    process = create(
-        "assign_scalar_variable_to_conditions_process",
-        {
-            "model_part_name": "Structure.Top",
-            "variable_name": "NEGATIVE_FACE_PRESSURE",
-            "value": "0.2*t",
-            "interval": [0.0, "End"],
-        },
-        model,
+    process = _create(
+        model, "Structure.Top", "NEGATIVE_FACE_PRESSURE", value="0.2*t", interval=[0.0, "End"]
     )
     process.ExecuteBeforeSolutionLoop()  # conditions are only set at step start
     assert plate.GetCondition(1).GetValue(ca.NEGATIVE_FACE_PRESSURE) == 0.0
@@ -33,15 +30,8 @@ def test_assign_to_conditions_time_function_per_step(model: ca.Model, plate: ca.
 def test_assign_to_conditions_space_function_at_centres_and_interval(
     model: ca.Model, plate: ca.ModelPart
 ) -> None:
-    process = create(
-        "assign_scalar_variable_to_conditions_process",
-        {
-            "model_part_name": "Structure.Top",
-            "variable_name": "LINE_LOAD_Y",
-            "value": "x*t + 100*X",
-            "interval": [0.5, 1.0],
-        },
-        model,
+    process = _create(
+        model, "Structure.Top", "LINE_LOAD_Y", value="x*t + 100*X", interval=[0.5, 1.0]
     )
     plate.GetNode(9).X = 2.5  # current centre of condition 1 = 1.75, initial 1.5
     plate.CloneTimeStep(1.0)
@@ -57,8 +47,4 @@ def test_assign_to_conditions_refuses_vector_variables(
     model: ca.Model, plate: ca.ModelPart
 ) -> None:
     with pytest.raises(ca.InputError, match="of kind Array"):
-        create(
-            "assign_scalar_variable_to_conditions_process",
-            {"model_part_name": "Structure.Top", "variable_name": "LINE_LOAD", "value": 1.0},
-            model,
-        )
+        _create(model, "Structure.Top", "LINE_LOAD", value=1.0)

@@ -2,26 +2,22 @@
 
 from __future__ import annotations
 
+from functools import partial
+
 import numpy as np
 import pytest
-from conftest import create
+from conftest import create_on
 
 import contact_app as ca
+
+_create = partial(create_on, "assign_vector_by_direction_process", variable="DISPLACEMENT")
 
 
 def test_assign_by_direction_normalises_and_fixes_per_step(
     model: ca.Model, plate: ca.ModelPart
 ) -> None:
-    process = create(
-        "assign_vector_by_direction_process",
-        {
-            "model_part_name": "Structure.Top",
-            "variable_name": "DISPLACEMENT",
-            "modulus": "0.5*t",
-            "direction": [3.0, 4.0, 0.0],
-            "interval": [0.0, "End"],
-        },
-        model,
+    process = _create(
+        model, "Structure.Top", modulus="0.5*t", direction=[3.0, 4.0, 0.0], interval=[0.0, "End"]
     )
     node = plate.GetNode(7)
     for time in (1.0, 2.0):
@@ -40,16 +36,8 @@ def test_assign_by_direction_3d_assigns_z_and_numeric_modulus(
     model: ca.Model, plate: ca.ModelPart
 ) -> None:
     plate.ProcessInfo[ca.DOMAIN_SIZE] = 3
-    process = create(
-        "assign_vector_by_direction_process",
-        {
-            "model_part_name": "Structure.Bottom",
-            "variable_name": "DISPLACEMENT",
-            "modulus": 2.0,
-            "direction": [0.0, 0.0, -5.0],
-            "constrained": False,
-        },
-        model,
+    process = _create(
+        model, "Structure.Bottom", modulus=2.0, direction=[0.0, 0.0, -5.0], constrained=False
     )
     process.ExecuteBeforeSolutionLoop()
     np.testing.assert_allclose(plate.GetNode(1).GetSolutionStepValue(ca.DISPLACEMENT), [0, 0, -2])
@@ -58,16 +46,7 @@ def test_assign_by_direction_3d_assigns_z_and_numeric_modulus(
 
 def test_assign_by_direction_automatic_normals(model: ca.Model, plate: ca.ModelPart) -> None:
     for kind, sign in (("automatic_outwards_normal", 1.0), ("automatic_inwards_normal", -1.0)):
-        process = create(
-            "assign_vector_by_direction_process",
-            {
-                "model_part_name": "Structure.Top",
-                "variable_name": "DISPLACEMENT",
-                "modulus": 3.0,
-                "direction": kind,
-            },
-            model,
-        )
+        process = _create(model, "Structure.Top", modulus=3.0, direction=kind)
         process.ExecuteBeforeSolutionLoop()
         np.testing.assert_allclose(
             plate.GetNode(8).GetSolutionStepValue(ca.DISPLACEMENT),
@@ -79,16 +58,7 @@ def test_assign_by_direction_automatic_normals(model: ca.Model, plate: ca.ModelP
 def test_assign_by_direction_function_direction_is_not_normalised(
     model: ca.Model, plate: ca.ModelPart
 ) -> None:
-    process = create(
-        "assign_vector_by_direction_process",
-        {
-            "model_part_name": "Structure.Top",
-            "variable_name": "DISPLACEMENT",
-            "modulus": 2.0,
-            "direction": ["t", 1.0, 0.0],
-        },
-        model,
-    )
+    process = _create(model, "Structure.Top", modulus=2.0, direction=["t", 1.0, 0.0])
     plate.CloneTimeStep(3.0)
     process.ExecuteInitializeSolutionStep()
     np.testing.assert_allclose(plate.GetNode(9).GetSolutionStepValue(ca.DISPLACEMENT), [6, 2, 0])
@@ -107,43 +77,19 @@ def test_assign_by_direction_function_direction_is_not_normalised(
 def test_assign_by_direction_bad_settings_raise_input_error(
     model: ca.Model, plate: ca.ModelPart, parameters: dict[str, object], message: str
 ) -> None:
-    settings = {
-        "model_part_name": "Structure.Top",
-        "variable_name": "DISPLACEMENT",
-        "modulus": 1.0,
-        "direction": [1.0, 0.0, 0.0],
-        **parameters,
-    }
+    settings = {"modulus": 1.0, "direction": [1.0, 0.0, 0.0], **parameters}
     with pytest.raises(ca.InputError, match=message):
-        create("assign_vector_by_direction_process", settings, model)
+        _create(model, "Structure.Top", **settings)
 
 
 def test_assign_by_direction_needs_a_domain_size(model: ca.Model, plate: ca.ModelPart) -> None:
     plate.ProcessInfo[ca.DOMAIN_SIZE] = 0
     with pytest.raises(ca.InputError, match="set solver_settings.domain_size"):
-        create(
-            "assign_vector_by_direction_process",
-            {
-                "model_part_name": "Structure.Top",
-                "variable_name": "DISPLACEMENT",
-                "modulus": 1.0,
-                "direction": [1.0, 0.0, 0.0],
-            },
-            model,
-        )
+        _create(model, "Structure.Top", modulus=1.0, direction=[1.0, 0.0, 0.0])
 
 
 def test_assign_by_direction_automatic_without_conditions_is_an_error(
     model: ca.Model, plate: ca.ModelPart
 ) -> None:
     with pytest.raises(ca.InputError, match="it has no conditions"):
-        create(
-            "assign_vector_by_direction_process",
-            {
-                "model_part_name": "Structure.Bottom",
-                "variable_name": "DISPLACEMENT",
-                "modulus": 1.0,
-                "direction": "automatic_inwards_normal",
-            },
-            model,
-        )
+        _create(model, "Structure.Bottom", modulus=1.0, direction="automatic_inwards_normal")

@@ -2,27 +2,25 @@
 
 from __future__ import annotations
 
+from functools import partial
+
 import numpy as np
 import pytest
-from conftest import create
+from conftest import create_on
 
 import contact_app as ca
+
+_create = partial(
+    create_on, "assign_vector_by_direction_to_condition_process", variable="LINE_LOAD"
+)
 
 
 def test_by_direction_to_conditions_as_in_the_3d_kratos_case(
     model: ca.Model, plate: ca.ModelPart
 ) -> None:
-    process = create(
-        "assign_vector_by_direction_to_condition_process",
-        {
-            "mesh_id": 0,
-            "model_part_name": "Structure.Top",
-            "variable_name": "LINE_LOAD",
-            "modulus": 1.0e9,
-            "direction": [0.0, 0.0, -1.0],
-            "interval": [0.0, "End"],
-        },
-        model,
+    down = [0.0, 0.0, -1.0]
+    process = _create(
+        model, "Structure.Top", mesh_id=0, modulus=1.0e9, direction=down, interval=[0.0, "End"]
     )
     plate.CloneTimeStep(1.1)
     process.ExecuteInitializeSolutionStep()
@@ -33,16 +31,9 @@ def test_by_direction_to_conditions_as_in_the_3d_kratos_case(
 def test_by_direction_to_conditions_time_modulus_and_inward_normal(
     model: ca.Model, plate: ca.ModelPart
 ) -> None:
-    process = create(
-        "assign_vector_by_direction_to_condition_process",
-        {
-            "model_part_name": "Structure.Top",
-            "variable_name": "LINE_LOAD",
-            "modulus": "10*t",
-            "direction": "automatic_inwards_normal",
-            "interval": [0.0, 1.0],
-        },
-        model,
+    inwards = "automatic_inwards_normal"
+    process = _create(
+        model, "Structure.Top", modulus="10*t", direction=inwards, interval=[0.0, 1.0]
     )
     # Kratos' interval: with begin 0 the end itself (t = 1.0) is outside; values persist after
     for time, load in ((0.5, -5.0), (0.75, -7.5), (1.0, -7.5), (2.0, -7.5)):
@@ -57,13 +48,4 @@ def test_by_direction_to_conditions_tiny_direction_is_an_error(
     model: ca.Model, plate: ca.ModelPart
 ) -> None:
     with pytest.raises(ca.InputError, match="has length 1e-07"):
-        create(
-            "assign_vector_by_direction_to_condition_process",
-            {
-                "model_part_name": "Structure.Top",
-                "variable_name": "LINE_LOAD",
-                "modulus": 1.0,
-                "direction": [1e-7, 0.0, 0.0],
-            },
-            model,
-        )
+        _create(model, "Structure.Top", modulus=1.0, direction=[1e-7, 0.0, 0.0])

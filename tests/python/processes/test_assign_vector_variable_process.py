@@ -2,27 +2,27 @@
 
 from __future__ import annotations
 
+from functools import partial
+
 import numpy as np
 import pytest
-from conftest import create, run_steps
+from conftest import create, create_on, run_steps
 
 import contact_app as ca
+
+_create = partial(create_on, "assign_vector_variable_process", variable="DISPLACEMENT")
 
 
 def test_assign_vector_components_values_and_fixity_per_step(
     model: ca.Model, plate: ca.ModelPart
 ) -> None:
-    process = create(
-        "assign_vector_variable_process",
-        {
-            "mesh_id": 0,
-            "model_part_name": "Structure.Top",
-            "variable_name": "DISPLACEMENT",
-            "value": [0.0, "-2.0e-1*t", "0.1*y*t"],
-            "constrained": [False, True, True],
-            "interval": [0.0, "End"],
-        },
+    process = _create(
         model,
+        "Structure.Top",
+        mesh_id=0,
+        value=[0.0, "-2.0e-1*t", "0.1*y*t"],
+        constrained=[False, True, True],
+        interval=[0.0, "End"],
     )
     node = plate.GetNode(8)
     process.ExecuteBeforeSolutionLoop()
@@ -42,15 +42,7 @@ def test_assign_vector_components_values_and_fixity_per_step(
 
 
 def test_assign_vector_null_component_is_untouched(model: ca.Model, plate: ca.ModelPart) -> None:
-    process = create(
-        "assign_vector_variable_process",
-        {
-            "model_part_name": "Structure.Bottom",
-            "variable_name": "DISPLACEMENT",
-            "value": [None, 0.5, None],
-        },
-        model,
-    )
+    process = _create(model, "Structure.Bottom", value=[None, 0.5, None])
     node = plate.GetNode(3)
     node.SetSolutionStepValue(ca.DISPLACEMENT, 0, [7.0, 8.0, 9.0])
     run_steps(plate, [process], [1.0])
@@ -64,39 +56,18 @@ def test_assign_vector_null_component_is_untouched(model: ca.Model, plate: ca.Mo
 def test_assign_vector_single_constrained_bool_is_broadcast(
     model: ca.Model, plate: ca.ModelPart
 ) -> None:
-    process = create(
-        "assign_vector_variable_process",
-        {
-            "model_part_name": "Structure.Bottom",
-            "variable_name": "DISPLACEMENT",
-            "constrained": False,
-        },
-        model,
-    )
+    process = _create(model, "Structure.Bottom", constrained=False)
     plate.CloneTimeStep(1.0)
     process.ExecuteInitializeSolutionStep()
     assert not any(n.IsFixed(ca.DISPLACEMENT_X) for n in plate.Nodes)
-    default = create(
-        "assign_vector_variable_process",
-        {"model_part_name": "Structure.Bottom", "variable_name": "DISPLACEMENT"},
-        model,
-    )
+    default = _create(model, "Structure.Bottom")
     default.ExecuteInitializeSolutionStep()
     bottom = plate.GetSubModelPart("Bottom")
     assert all(n.IsFixed(ca.DISPLACEMENT_X) and n.IsFixed(ca.DISPLACEMENT_Z) for n in bottom.Nodes)
 
 
 def test_assign_vector_interval_respected(model: ca.Model, plate: ca.ModelPart) -> None:
-    process = create(
-        "assign_vector_variable_process",
-        {
-            "model_part_name": "Structure.Top",
-            "variable_name": "DISPLACEMENT",
-            "value": ["t", "2*t", None],
-            "interval": [1.0, 2.0],
-        },
-        model,
-    )
+    process = _create(model, "Structure.Top", value=["t", "2*t", None], interval=[1.0, 2.0])
     node = plate.GetNode(9)
     seen = []
     for time in (0.5, 1.0, 2.0, 3.0):
