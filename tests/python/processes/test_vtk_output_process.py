@@ -11,6 +11,7 @@ import meshio
 import numpy as np
 import pytest
 from conftest import build_plate, create, impose_displacement
+from contact.patch_meshes import HEX_CORNERS  # tests/python/contact/patch_meshes.py
 
 import contact_app as ca
 
@@ -293,14 +294,7 @@ def test_vtk_mixed_cell_types_in_2d_and_3d(tmp_path: Path) -> None:
     mp.AddNodalSolutionStepVariable(ca.DISPLACEMENT)
     props = mp.CreateNewProperties(0)
     coordinates = [
-        (0, 0, 0),
-        (1, 0, 0),
-        (1, 1, 0),
-        (0, 1, 0),
-        (0, 0, 1),
-        (1, 0, 1),
-        (1, 1, 1),
-        (0, 1, 1),
+        *HEX_CORNERS,  # nodes 1-8: the unit cube, in the hexahedron's corner order
         (2, 0, 0),
         (2, 1, 0),
         (2, 0, 1),
