@@ -11,6 +11,7 @@ from typing import Any
 
 import pytest
 from cli_runner import run_cli
+from process_descriptors import core_process
 
 import contact_app as ca
 from contact_app import cli
@@ -484,8 +485,7 @@ def _bytes(name: str, data: bytes) -> Callable[[Path], None]:
 
 
 def _process(list_name: str, python_module: str, **settings: Any) -> Callable[[Path], None]:
-    descriptor = {"python_module": python_module, "kratos_module": "KratosMultiphysics"}
-    descriptor["Parameters"] = {"model_part_name": "Structure", **settings}
+    descriptor = core_process(python_module, {"model_part_name": "Structure", **settings})
     return _params(lambda p: p.setdefault(list_name, {}).update(extra=[descriptor]))
 
 
@@ -684,11 +684,10 @@ UNTRUSTED_INPUTS: list[tuple[str, Callable[[Path], None], list[str]]] = [
         _params(
             lambda p: p["output_processes"].update(
                 twice=[
-                    {
-                        "python_module": "json_output_process",
-                        "kratos_module": "KratosMultiphysics",
-                        "Parameters": {"model_part_name": "Structure", "output_file_name": name},
-                    }
+                    core_process(
+                        "json_output_process",
+                        {"model_part_name": "Structure", "output_file_name": name},
+                    )
                     for name in ("out.json", "./out.json")
                 ]
             )
