@@ -35,6 +35,15 @@ def _static_solver(linear: dict[str, Any]) -> StaticMechanicalSolver:
     )
 
 
+def _linear_settings_error(linear: dict[str, Any], key: str) -> str:
+    """The message of the InputError ``linear`` raises; checks it names the place of ``key``."""
+    with pytest.raises(ca.InputError) as failure:
+        _static_solver(linear)
+    message = str(failure.value)
+    assert f"case.json › solver_settings › linear_solver_settings › {key}" in message
+    return message
+
+
 @pytest.mark.parametrize("ordering", ["auto", "amd", "metis"])
 def test_every_ordering_is_accepted(ordering: str) -> None:
     _static_solver({"solver_type": "umfpack", "ordering": ordering})
@@ -43,11 +52,8 @@ def test_every_ordering_is_accepted(ordering: str) -> None:
 
 
 def test_unknown_ordering_names_the_key_and_suggests() -> None:
-    with pytest.raises(ca.InputError) as failure:
-        _static_solver({"solver_type": "umfpack", "ordering": "metiss"})
-    message = str(failure.value)
+    message = _linear_settings_error({"solver_type": "umfpack", "ordering": "metiss"}, "ordering")
     assert 'unknown linear_solver_settings.ordering "metiss"' in message
-    assert "case.json › solver_settings › linear_solver_settings › ordering" in message
     assert '"amd", "auto", "metis"' in message
     assert 'did you mean "metis"' in message
 

@@ -24,7 +24,7 @@ import contact_app as ca
 
 sys.path.insert(0, str(Path(__file__).parent))
 import petsc_hertz_3d_case as case  # noqa: E402
-from test_direct_solver_ordering import _static_solver  # noqa: E402
+from test_direct_solver_ordering import _linear_settings_error, _static_solver  # noqa: E402
 
 CASE_SCRIPT = Path(__file__).parent / "petsc_hertz_3d_case.py"
 UNAVAILABLE = ca.PetscUnavailableReason()
@@ -143,11 +143,9 @@ def test_two_mpi_ranks_give_the_serial_direct_solution(tmp_path: Path, reform: b
 
 
 def test_unknown_amgcl_settings_name_the_key() -> None:
-    with pytest.raises(ca.InputError) as failure:
-        _static_solver({"solver_type": "amgcl", "smoother_type": "gauss_seidl"})
-    message = str(failure.value)
+    bad = {"solver_type": "amgcl", "smoother_type": "gauss_seidl"}
+    message = _linear_settings_error(bad, "smoother_type")
     assert 'linear_solver_settings.smoother_type "gauss_seidl"' in message
-    assert "case.json › solver_settings › linear_solver_settings › smoother_type" in message
     assert 'did you mean "gauss_seidel"' in message
     with pytest.raises(ca.InputError, match="krylov_type"):
         _static_solver({"solver_type": "gmres", "krylov_type": "idrs"})
