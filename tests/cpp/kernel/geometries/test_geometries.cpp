@@ -10,9 +10,6 @@
 #include <gtest/gtest.h>
 
 #include "contact_app/kernel/exceptions.h"
-#include "contact_app/kernel/geometries/line_2d_2.h"
-#include "contact_app/kernel/geometries/quadrilateral_3d_4.h"
-#include "contact_app/kernel/geometries/triangle_3d_3.h"
 #include "geometry_test_utilities.h"
 
 namespace contact_app {
