@@ -20,6 +20,11 @@ def _reference(path: Path, times: list[float], nodes: dict[int, dict[str, list[A
     return str(path)
 
 
+def _x_reference(path: Path, times: list[float], columns: dict[int, list[float]]) -> str:
+    """``_reference`` with only DISPLACEMENT_X: node id -> its column, what most tests check."""
+    return _reference(path, times, {i: {"DISPLACEMENT_X": column} for i, column in columns.items()})
+
+
 def _checker(model: ca.Model, reference: str, **settings: Any) -> Any:
     return create(
         "from_json_check_result_process",
@@ -55,9 +60,7 @@ def test_check_time_frequency_fires_only_when_strictly_exceeded(
     frequency: float,
     checked_steps: list[int],
 ) -> None:
-    reference = _reference(
-        tmp_path / "r.json", [0.0], {i: {"DISPLACEMENT_X": [0.0]} for i in (1, 2, 3)}
-    )
+    reference = _x_reference(tmp_path / "r.json", [0.0], {i: [0.0] for i in (1, 2, 3)})
     checker = _checker(model, reference, time_frequency=frequency)
     steps = range(1, 11 if frequency == 0.0 or dt < 0.5 else 7 if dt < 1.0 else 4)
     run_steps(plate, [checker], [dt * k for k in steps])
@@ -67,11 +70,8 @@ def test_check_time_frequency_fires_only_when_strictly_exceeded(
 def test_check_uses_the_nearest_stored_time(
     model: ca.Model, plate: ca.ModelPart, tmp_path: Path
 ) -> None:
-    reference = _reference(
-        tmp_path / "r.json",
-        [0.0, 1.0, 2.0],
-        {i: {"DISPLACEMENT_X": [0.0, 10.0 * i, 20.0 * i]} for i in (1, 2, 3)},
-    )
+    columns = {i: [0.0, 10.0 * i, 20.0 * i] for i in (1, 2, 3)}
+    reference = _x_reference(tmp_path / "r.json", [0.0, 1.0, 2.0], columns)
     checker = _checker(model, reference, time_frequency=0.0)
     checker.ExecuteInitialize()
     for time, stored in ((1.4, 1.0), (1.5, 2.0), (0.2, 0.0), (7.0, 2.0), (-1.0, 0.0)):
@@ -85,11 +85,8 @@ def test_check_uses_the_nearest_stored_time(
 def test_check_failure_message_names_variable_node_time_values_and_tolerances(
     model: ca.Model, plate: ca.ModelPart, tmp_path: Path
 ) -> None:
-    reference = _reference(
-        tmp_path / "case_results.json",
-        [1.0],
-        {1: {"DISPLACEMENT_X": [0.5]}, 2: {"DISPLACEMENT_X": [0.25]}, 3: {"DISPLACEMENT_X": [0.0]}},
-    )
+    columns = {1: [0.5], 2: [0.25], 3: [0.0]}
+    reference = _x_reference(tmp_path / "case_results.json", [1.0], columns)
     checker = _checker(model, reference, tolerance=1e-6, relative_tolerance=1e-4)
     _set_x(plate, {1: 0.5 * (1 + 5e-5), 2: 0.2, 3: 1e-7})
     plate.CloneTimeStep(1.5)
@@ -111,11 +108,7 @@ def test_check_failure_message_names_variable_node_time_values_and_tolerances(
 def test_check_for_flag_checks_only_flagged_nodes(
     model: ca.Model, plate: ca.ModelPart, tmp_path: Path
 ) -> None:
-    reference = _reference(
-        tmp_path / "r.json",
-        [1.0],
-        {1: {"DISPLACEMENT_X": [1.0]}, 2: {"DISPLACEMENT_X": [99.0]}},  # node 3 absent
-    )
+    reference = _x_reference(tmp_path / "r.json", [1.0], {1: [1.0], 2: [99.0]})  # node 3 absent
     checker = _checker(model, reference, check_for_flag="ACTIVE", time_frequency=0.0)
     _set_x(plate, {1: 1.0, 2: 0.0, 3: 0.0})
     plate.GetNode(1).Set(ca.ACTIVE, True)
@@ -193,9 +186,7 @@ def test_check_relative_input_file_starts_from_the_working_directory(
     model: ca.Model, plate: ca.ModelPart, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     (tmp_path / "case").mkdir()
-    _reference(
-        tmp_path / "case" / "r.json", [1.0], {i: {"DISPLACEMENT_X": [0.0]} for i in (1, 2, 3)}
-    )
+    _x_reference(tmp_path / "case" / "r.json", [1.0], {i: [0.0] for i in (1, 2, 3)})
     monkeypatch.chdir(tmp_path)
     checker = _checker(model, "case/r.json", time_frequency=0.0)
     run_steps(plate, [checker], [1.0])
