@@ -39,6 +39,14 @@ Array3 UnitNormal(const Node& node) {
     return norm > 0.0 ? Array3(n / norm) : n;
 }
 
+/// The contact traction on the slave node in the variables every mortar family writes (docs/theory/mortar.md §9):
+/// AUGMENTED_NORMAL_CONTACT_PRESSURE = p (< 0 in compression), AUGMENTED_TANGENT_CONTACT_PRESSURE = the friction
+/// force over the lumped area, so outputs and post-processing read one set of names whatever the family.
+void SetTraction(Node& rNode, double pressure, const Array3& tangential) {
+    rNode.SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, pressure);
+    rNode.SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE, tangential);
+}
+
 /// Every pair of "ComputingContact" is ACTIVE iff one of its slave nodes is; its constraint follows it.
 void SyncPairsAndConstraints(ModelPart& computing) {
     ContactUtilities::ActivateConditionWithActiveNodes(computing);
@@ -128,6 +136,7 @@ bool MPCContactCriteria::PostCriteria(ModelPart& rModelPart, DofsArrayType&, con
             node->Has(NODAL_PAUX) && node->GetValue(NODAL_PAUX) > 0.0 ? node->GetValue(NODAL_PAUX) : 1.0;
         if (!active) {
             node->SetValue(CONTACT_FORCE, Array3(Array3::Zero()));
+            SetTraction(*node, 0.0, Array3::Zero());
             if (frictional) node->Set(SLIP, false);
             continue;
         }
@@ -135,6 +144,7 @@ bool MPCContactCriteria::PostCriteria(ModelPart& rModelPart, DofsArrayType&, con
         node->SetValue(NORMAL_CONTACT_STRESS, pressure);
         if (!frictional) {
             node->SetValue(CONTACT_FORCE, Array3(normal_force * n / weight));
+            SetTraction(*node, pressure, Array3::Zero());
             continue;
         }
         const Array3 tangential_force = force - normal_force * n;
@@ -174,6 +184,7 @@ bool MPCContactCriteria::PostCriteria(ModelPart& rModelPart, DofsArrayType&, con
         if (slipping) ++mSlipNodes;
         const Array3 friction = slipping && mu > 0.0 ? Array3(-mu * normal_force * direction) : tangential_force;
         node->SetValue(CONTACT_FORCE, Array3((normal_force * n + friction) / weight));
+        SetTraction(*node, pressure, Array3(friction / lumped_area));
         node->SetValue(TANGENTIAL_CONTACT_STRESS, slipping ? -mu * pressure : tangential_force.norm() / lumped_area);
     }
     if (computing != nullptr) SyncPairsAndConstraints(*computing);

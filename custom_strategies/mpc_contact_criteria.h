@@ -32,7 +32,9 @@ public:
     /// The active-set update described above (only when NL_ITERATION_NUMBER > 0).
     /// Writes NORMAL_CONTACT_STRESS = p (active nodes), TANGENTIAL_CONTACT_STRESS (frictional, active nodes:
     /// |F_τ|/A_ℓ in stick, −μ(F·n)/A_ℓ in slip) and CONTACT_FORCE ((F·n)n/NODAL_PAUX frictionless, F/NODAL_PAUX
-    /// frictional) on the slave nodes.
+    /// frictional) on the slave nodes, and the traction in the names the other families use:
+    /// AUGMENTED_NORMAL_CONTACT_PRESSURE = p, AUGMENTED_TANGENT_CONTACT_PRESSURE = F_τ/A_ℓ (the friction it imposes;
+    /// zero on inactive nodes).
     /// @throws InputError if the model part has no "Contact" sub model part
     bool PostCriteria(ModelPart& rModelPart, DofsArrayType& rDofSet, const SparseMatrixType& rA,
                       const SystemVectorType& rDx, const SystemVectorType& rB,

@@ -249,12 +249,16 @@ def output_names(folder: Path, figure: str) -> tuple[str, str, str]:
     return f"{name}.msh", f"{name}_{figure}.png", f"{name}_summary.txt"
 
 
+#: The contact processes whose Parameters block the examples read (mu, pairs).
+CONTACT_PROCESSES = ("alm_contact_process", "penalty_contact_process", "mpc_contact_process")
+
+
 def contact_parameters(parameters: dict) -> dict:
-    """The Parameters block of the ALM contact process of a ProjectParameters tree."""
+    """The Parameters block of the ALM, penalty or MPC contact process of a parameters tree."""
     for process in parameters["processes"]["contact_process_list"]:
-        if process["python_module"] == "alm_contact_process":
+        if process["python_module"] in CONTACT_PROCESSES:
             return process["Parameters"]
-    raise ValueError("no alm_contact_process in processes.contact_process_list")
+    raise ValueError(f"none of {', '.join(CONTACT_PROCESSES)} in processes.contact_process_list")
 
 
 def friction_coefficient(parameters: dict) -> float:

@@ -21,6 +21,15 @@ import pytest
 
 EXAMPLE = Path(__file__).parents[3] / "examples" / "cattaneo_mindlin_2d"
 STUDY_LEVELS = (1, 2, 3)
+#: The frictional routes on the example's level-2 mesh (19 active nodes, 6 slipping at the end):
+#: name -> (family, penalty tangent_factor or None for the process default).
+FAMILY_LEVEL = 2
+FAMILIES = {
+    "alm": ("alm", None),
+    "penalty_default": ("penalty", None),  # tangent_factor 1e-2
+    "penalty_stiff": ("penalty", 0.1),
+    "mpc": ("mpc", None),
+}
 
 
 def _example_module():
@@ -40,6 +49,97 @@ def _copy_inputs(directory: Path, vtk: bool = True) -> None:
         parameters["output_processes"] = {}
     (directory / "ProjectParameters.json").write_text(json.dumps(parameters))
     shutil.copy(EXAMPLE / "materials.json", directory / "materials.json")
+
+
+def _family_inputs(directory: Path, family: str, tangent_factor: float | None) -> None:
+    """The example's inputs in ``directory`` with the contact family swapped (no output)."""
+    parameters = json.loads((EXAMPLE / "ProjectParameters.json").read_text())
+    parameters["output_processes"] = {}
+    process = parameters["processes"]["contact_process_list"][0]
+    solver = parameters["solver_settings"]
+    if family == "penalty":
+        solver["contact_settings"]["mortar_type"] = "PenaltyContactFrictional"
+        process["python_module"] = "penalty_contact_process"
+        if tangent_factor is not None:
+            process["Parameters"]["tangent_factor"] = tangent_factor
+    elif family == "mpc":
+        del solver["contact_settings"]
+        solver["mpc_contact_settings"] = {"contact_type": "Frictional"}
+        solver["convergence_criterion"] = "residual_criterion"
+        process["python_module"] = "mpc_contact_process"
+    (directory / "ProjectParameters.json").write_text(json.dumps(parameters))
+    shutil.copy(EXAMPLE / "materials.json", directory / "materials.json")
+
+
+@pytest.fixture(scope="module")
+def family_runs(tmp_path_factory: pytest.TempPathFactory) -> dict:
+    """The example at FAMILY_LEVEL with each of FAMILIES (about 20 s in all)."""
+    module = _example_module()
+    runs = {}
+    for name, (family, tangent_factor) in FAMILIES.items():
+        directory = tmp_path_factory.mktemp(name)
+        _family_inputs(directory, family, tangent_factor)
+        runs[name] = module.run(directory, FAMILY_LEVEL)
+        r = runs[name]
+        print(
+            f"{name}: c/a {r.c / r.a_analytic:.4f} (analytic {r.c_over_a_analytic:.4f}), "
+            f"slipping per step {[step.slipping for step in r.steps]}, Newton {r.iterations}"
+        )
+    return runs
+
+
+def _state(result: object) -> list[tuple[float, bool, bool]]:
+    return [(round(node.x, 9), node.active, node.slip) for node in result.profile]
+
+
+@pytest.mark.parametrize("name", ["penalty_stiff", "mpc"])
+def test_penalty_and_mpc_routes_reproduce_the_alm_partial_slip(
+    family_runs: dict, name: str
+) -> None:
+    """Same contact and stick/slip sets as ALM, Coulomb on every node, the stick zone of each step.
+
+    Measured (level 2): the sets equal ALM's at every node; |q| = mu p on the slip nodes to 1e-9;
+    c/a 0.6918 against 0.7071 (h/(2a) = 0.053); the slip zones grow by one node on each side per
+    load step (1, 2, 4, 6 slipping; MPC 1, 3, 4, 6), so two nodes leave the stick zone in one step.
+    """
+    alm, r = family_runs["alm"], family_runs[name]
+    assert r.converged
+    assert _state(r) == _state(alm)
+    assert r.coulomb_slip_deviation < 1e-6
+    assert r.stick_max_ratio < 1.0
+    assert r.stick_contiguous
+    assert r.contact_tangential_force == pytest.approx(r.tangential_load, rel=1e-4)
+    a, h = r.a_analytic, r.spacing
+    assert r.c == pytest.approx(alm.c, rel=1e-12)
+    assert abs(r.c / a - r.c_over_a_analytic) <= h / (2.0 * a)
+    # The stick zone of every tangential step. (While pressing, MPC lets the two newest edge nodes
+    # slip at t = 0.5 - their tangential reaction leaves the cone of a still tiny normal force -
+    # and sticks them again at the next step; ALM and penalty do not.)
+    tangential = [step for step in r.steps if step.ratio > 0.0]
+    for step in tangential:
+        assert abs(step.stick_half_width - a * math.sqrt(1.0 - step.ratio)) <= h / 2.0
+    slipping = [step.slipping for step in tangential]
+    assert max(b - a for a, b in zip(slipping[:-1], slipping[1:], strict=True)) >= 2
+
+
+def test_penalty_stick_zone_tends_to_the_alm_one_as_its_tangential_penalty_grows(
+    family_runs: dict,
+) -> None:
+    """Penalty friction sticks elastically, and its stick zone shrinks to Coulomb's as kappa grows.
+
+    The stick traction is kappa eps (e + s), so part of the shear is carried by elastic slip and the
+    stick zone comes out too wide. With the process default tangent_factor kappa = 1e-2 the level-2
+    stick zone is c/a = 0.798 (measured; 4 slipping nodes instead of 6), 0.091 above the analytic
+    0.707, beyond h/(2a) = 0.053; with kappa = 0.1 (and 10, measured) it is ALM's, 0.6918.
+    docs/theory/mortar.md §8 "Penalty friction's regularisation".
+    """
+    alm, soft, stiff = (family_runs[name] for name in ("alm", "penalty_default", "penalty_stiff"))
+    assert soft.converged
+    a = alm.a_analytic
+    assert soft.c / a == pytest.approx(0.798, abs=1e-3)
+    assert soft.c > stiff.c == pytest.approx(alm.c, rel=1e-12)
+    assert sum(node.slip for node in soft.active) < sum(node.slip for node in alm.active)
+    assert soft.coulomb_slip_deviation < 1e-6
 
 
 def test_parameters_file_holds_the_default_loads() -> None:
