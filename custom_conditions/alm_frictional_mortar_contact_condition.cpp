@@ -63,20 +63,6 @@ Condition::Pointer ALMF_CLASS::Create(IndexType new_id, Geometry::Pointer slave,
 }
 
 ALMF_TEMPLATE
-void ALMF_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&) const {
-    const Geometry& slave = this->GetParentGeometry();
-    rElementalDofList.clear();
-    rElementalDofList.reserve(BaseType::MatrixSize);
-    AppendDisplacementDofs<TDim, TNS, TNM>(slave, this->GetPairedGeometry(), rElementalDofList);
-    AppendVectorMultiplierDofs<TDim, TNS>(slave, rElementalDofList);
-}
-
-ALMF_TEMPLATE
-typename ALMF_CLASS::BaseType::MultiplierVector ALMF_CLASS::MultiplierValues() const {
-    return VectorMultiplierValues<TDim, TNS, typename BaseType::MultiplierVector>(this->GetParentGeometry());
-}
-
-ALMF_TEMPLATE
 template <class T>
 void ALMF_CLASS::AddFrictionalResidual(const State<T>& state, const ProcessInfo& rCurrentProcessInfo,
                                        LocalVector<T>& rhs) const {

@@ -32,12 +32,8 @@ public:
 
     Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
                               Geometry::Pointer master) const override;
-    /// @param[out] rElementalDofList [master DISPLACEMENT_*, slave DISPLACEMENT_*, slave VECTOR_LAGRANGE_MULTIPLIER_*]
-    /// @param[in] rCurrentProcessInfo not read
-    void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
 
 protected:
-    typename BaseType::MultiplierVector MultiplierValues() const override;
     void AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
                      LocalVector<double>& rhs) const override;
     void AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,

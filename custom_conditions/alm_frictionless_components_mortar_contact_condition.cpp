@@ -49,28 +49,6 @@ Condition::Pointer ALMC_CLASS::Create(IndexType new_id, Geometry::Pointer slave,
 }
 
 ALMC_TEMPLATE
-void ALMC_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&) const {
-    const Geometry& slave = this->GetParentGeometry();
-    rElementalDofList.clear();
-    rElementalDofList.reserve(BaseType::MatrixSize);
-    AppendDisplacementDofs<TDim, TNS, TNM>(slave, this->GetPairedGeometry(), rElementalDofList);
-    AppendVectorMultiplierDofs<TDim, TNS>(slave, rElementalDofList);
-}
-
-ALMC_TEMPLATE
-int ALMC_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
-    BaseType::Check(rCurrentProcessInfo);
-    const Geometry& slave = this->GetParentGeometry();
-    CheckVectorMultiplier<TDim, TNS>(slave, this->Id(), "ALMContactFrictionlessComponents");
-    return 0;
-}
-
-ALMC_TEMPLATE
-typename ALMC_CLASS::BaseType::MultiplierVector ALMC_CLASS::MultiplierValues() const {
-    return VectorMultiplierValues<TDim, TNS, typename BaseType::MultiplierVector>(this->GetParentGeometry());
-}
-
-ALMC_TEMPLATE
 void ALMC_CLASS::AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
                              LocalVector<double>& rhs) const {
     const auto [k, p] = ReadALMParameters<TNS>(this->GetParentGeometry(), rCurrentProcessInfo, this->Id());

@@ -36,37 +36,6 @@ Condition::Pointer ALM_CLASS::Create(IndexType new_id, Geometry::Pointer slave, 
 }
 
 ALM_TEMPLATE
-void ALM_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&) const {
-    const Geometry& slave = this->GetParentGeometry();
-    const Geometry& master = this->GetPairedGeometry();
-    rElementalDofList.clear();
-    rElementalDofList.reserve(BaseType::MatrixSize);
-    AppendDisplacementDofs<TDim, TNS, TNM>(slave, master, rElementalDofList);
-    for (int j = 0; j < TNS; ++j) rElementalDofList.push_back(&slave[j].GetDof(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE));
-}
-
-ALM_TEMPLATE
-int ALM_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
-    BaseType::Check(rCurrentProcessInfo);
-    const Geometry& slave = this->GetParentGeometry();
-    for (int j = 0; j < TNS; ++j)
-        CONTACT_CHECK(slave[j].SolutionStepsDataHas(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE) &&
-                          slave[j].HasDofFor(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE),
-                      InputError, "condition ", this->Id(), ": slave node ", slave[j].Id(),
-                      " lacks LAGRANGE_MULTIPLIER_CONTACT_PRESSURE (historical variable and DoF)",
-                      "\n  fix: use mortar_type \"ALMContactFrictionless\" so the solver adds them");
-    return 0;
-}
-
-ALM_TEMPLATE
-typename ALM_CLASS::BaseType::MultiplierVector ALM_CLASS::MultiplierValues() const {
-    const Geometry& slave = this->GetParentGeometry();
-    typename BaseType::MultiplierVector lambda;
-    for (int j = 0; j < TNS; ++j) lambda[j] = slave[j].FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE);
-    return lambda;
-}
-
-ALM_TEMPLATE
 void ALM_CLASS::AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
                             LocalVector<double>& rhs) const {
     const auto [k, p] = ReadALMParameters<TNS>(this->GetParentGeometry(), rCurrentProcessInfo, this->Id());

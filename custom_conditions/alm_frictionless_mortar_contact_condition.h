@@ -30,16 +30,8 @@ public:
 
     Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
                               Geometry::Pointer master) const override;
-    /// @param[out] rElementalDofList [master DISPLACEMENT_*, slave DISPLACEMENT_*,
-    ///             slave LAGRANGE_MULTIPLIER_CONTACT_PRESSURE]
-    /// @param[in] rCurrentProcessInfo not read
-    /// @throws InputError if a DoF is missing
-    void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
-    /// Base checks plus LAGRANGE_MULTIPLIER_CONTACT_PRESSURE (historical and DoF) on the slave nodes.
-    int Check(const ProcessInfo& rCurrentProcessInfo) const override;
 
 protected:
-    typename BaseType::MultiplierVector MultiplierValues() const override;
     void AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
                      LocalVector<double>& rhs) const override;
     void AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,

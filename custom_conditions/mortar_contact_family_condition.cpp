@@ -46,13 +46,47 @@ void FAMILY_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInf
 FAMILY_TEMPLATE
 int FAMILY_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
     BaseType::Check(rCurrentProcessInfo);
-    if constexpr (IsFrictional) {
-        const Geometry& slave = this->GetParentGeometry();
-        if constexpr (TF == FrictionalCase::FRICTIONAL)
-            CheckVectorMultiplier<TDim, TNS>(slave, this->Id(), "ALMContactFrictional");
-        CheckFrictionalVariables<TDim, TNS>(slave, this->Id());
-    }
+    const Geometry& slave = this->GetParentGeometry();
+    if constexpr (TF == FrictionalCase::FRICTIONLESS)
+        for (int j = 0; j < TNS; ++j)
+            CONTACT_CHECK(slave[j].SolutionStepsDataHas(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE) &&
+                              slave[j].HasDofFor(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE),
+                          InputError, "condition ", this->Id(), ": slave node ", slave[j].Id(),
+                          " lacks LAGRANGE_MULTIPLIER_CONTACT_PRESSURE (historical variable and DoF)",
+                          "\n  fix: use mortar_type \"ALMContactFrictionless\" so the solver adds them");
+    if constexpr (TF == FrictionalCase::FRICTIONLESS_COMPONENTS)
+        CheckVectorMultiplier<TDim, TNS>(slave, this->Id(), "ALMContactFrictionlessComponents");
+    if constexpr (TF == FrictionalCase::FRICTIONAL)
+        CheckVectorMultiplier<TDim, TNS>(slave, this->Id(), "ALMContactFrictional");
+    if constexpr (IsFrictional) CheckFrictionalVariables<TDim, TNS>(slave, this->Id());
     return 0;
+}
+
+FAMILY_TEMPLATE
+void FAMILY_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&) const {
+    const Geometry& slave = this->GetParentGeometry();
+    rElementalDofList.clear();
+    rElementalDofList.reserve(BaseType::MatrixSize);
+    AppendDisplacementDofs<TDim, TNS, TNM>(slave, this->GetPairedGeometry(), rElementalDofList);
+    if constexpr (HasVectorMultiplier) AppendVectorMultiplierDofs<TDim, TNS>(slave, rElementalDofList);
+    if constexpr (TF == FrictionalCase::FRICTIONLESS)
+        for (int j = 0; j < TNS; ++j)
+            rElementalDofList.push_back(&slave[j].GetDof(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE));
+}
+
+FAMILY_TEMPLATE
+typename FAMILY_CLASS::BaseType::MultiplierVector FAMILY_CLASS::MultiplierValues() const {
+    const Geometry& slave = this->GetParentGeometry();
+    if constexpr (HasVectorMultiplier) {
+        return VectorMultiplierValues<TDim, TNS, typename BaseType::MultiplierVector>(slave);
+    } else if constexpr (TF == FrictionalCase::FRICTIONLESS) {
+        typename BaseType::MultiplierVector lambda;
+        for (int j = 0; j < TNS; ++j)
+            lambda[j] = slave[j].FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE);
+        return lambda;
+    } else {
+        return BaseType::MultiplierValues();  // penalty: no multipliers
+    }
 }
 
 FAMILY_TEMPLATE

@@ -22,8 +22,9 @@ using MortarContactFamilyBase =
 /// encoding, the explicit pass and, for the two Coulomb families (FRICTIONAL, FRICTIONAL_PENALTY), the start-of-step
 /// ("previous") mortar operators D_old, M_old of X0 + d(1) with their life cycle and restart state, the objective /
 /// non-objective slip switch recorded in MODIFIED and the frictional checks (frictionless_mortar_contact_common.h,
-/// frictional_mortar_contact_common.h; docs/theory/contact_residuals.md §2, §5, §7). A family derives from it and
-/// adds only its residual, its DoF list and its settings. Not registered itself.
+/// frictional_mortar_contact_common.h; docs/theory/contact_residuals.md §2, §5, §7), and the DoF list, multiplier
+/// values and multiplier checks, which the policy fixes. A family derives from it and adds only its residual and its
+/// settings. Not registered itself.
 template <int TDim, int TNumNodes, FrictionalCase TFrictional, bool TNormalVariation, int TNumNodesMaster>
 class MortarContactFamilyCondition
     : public MortarContactFamilyBase<TDim, TNumNodes, TFrictional, TNormalVariation, TNumNodesMaster> {
@@ -32,6 +33,9 @@ public:
     /// A Coulomb family: it keeps the previous operators and measures a slip.
     static constexpr bool IsFrictional =
         TFrictional == FrictionalCase::FRICTIONAL || TFrictional == FrictionalCase::FRICTIONAL_PENALTY;
+    /// A family with one multiplier per slave node and dimension (VECTOR_LAGRANGE_MULTIPLIER).
+    static constexpr bool HasVectorMultiplier =
+        TFrictional == FrictionalCase::FRICTIONAL || TFrictional == FrictionalCase::FRICTIONLESS_COMPONENTS;
     using BaseType::BaseType;
 
     /// Base reset plus (Coulomb) the previous operators (zero, not initialized).
@@ -49,14 +53,23 @@ public:
     /// hard-codes the plane case, the axisymmetric variants weight all by 2π r / t, as their implicit operators
     /// (docs/theory/contact_residuals.md §9).
     void AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) override;
-    /// Base checks; Coulomb: then (ALM) VECTOR_LAGRANGE_MULTIPLIER (historical and DoFs), WEIGHTED_SLIP (historical)
-    /// and a buffer ≥ 2.
+    /// Base checks, then the family's multipliers on the slave nodes (LAGRANGE_MULTIPLIER_CONTACT_PRESSURE for ALM
+    /// frictionless, VECTOR_LAGRANGE_MULTIPLIER for ALM frictionless components and ALM frictional: historical and
+    /// DoFs); Coulomb: WEIGHTED_SLIP (historical) and a buffer ≥ 2.
     int Check(const ProcessInfo& rCurrentProcessInfo) const override;
+    /// @param[out] rElementalDofList [master DISPLACEMENT_*, slave DISPLACEMENT_*] and the slave multipliers:
+    ///             LAGRANGE_MULTIPLIER_CONTACT_PRESSURE (ALM frictionless), VECTOR_LAGRANGE_MULTIPLIER_* node by node
+    ///             (ALM frictionless components, ALM frictional), none (penalty)
+    /// @param[in] rCurrentProcessInfo not read
+    /// @throws InputError if a DoF is missing
+    void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
     /// Paired-condition state plus (Coulomb) the previous operators and their flags (restart with a consistent slip).
     void Save(Serializer& rSerializer) const override;
     void Load(Serializer& rSerializer) override;
 
 protected:
+    /// The λ block of q, in GetDofList's order (empty for a penalty family).
+    typename BaseType::MultiplierVector MultiplierValues() const override;
     /// Coulomb: records the objective switch of this configuration in MODIFIED.
     void InitializeResidual(const MortarOperators<double, TNumNodes, TNumNodesMaster>& operators,
                             const ProcessInfo& rCurrentProcessInfo) override;

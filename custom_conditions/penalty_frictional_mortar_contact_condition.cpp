@@ -88,13 +88,6 @@ Condition::Pointer PENF_CLASS::Create(IndexType new_id, Geometry::Pointer slave,
 }
 
 PENF_TEMPLATE
-void PENF_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&) const {
-    rElementalDofList.clear();
-    rElementalDofList.reserve(BaseType::MatrixSize);
-    AppendDisplacementDofs<TDim, TNS, TNM>(this->GetParentGeometry(), this->GetPairedGeometry(), rElementalDofList);
-}
-
-PENF_TEMPLATE
 template <class T>
 void PENF_CLASS::AddFrictionalResidual(const State<T>& state, const ProcessInfo& rCurrentProcessInfo,
                                        LocalVector<T>& rhs) const {

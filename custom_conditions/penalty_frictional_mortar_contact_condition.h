@@ -33,9 +33,6 @@ public:
 
     Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
                               Geometry::Pointer master) const override;
-    /// @param[out] rElementalDofList [master DISPLACEMENT_*, slave DISPLACEMENT_*]
-    /// @param[in] rCurrentProcessInfo not read
-    void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
 
 protected:
     void AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,

@@ -51,13 +51,6 @@ Condition::Pointer PENALTY_CLASS::Create(IndexType new_id, Geometry::Pointer sla
 }
 
 PENALTY_TEMPLATE
-void PENALTY_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&) const {
-    rElementalDofList.clear();
-    rElementalDofList.reserve(BaseType::MatrixSize);
-    AppendDisplacementDofs<TDim, TNS, TNM>(this->GetParentGeometry(), this->GetPairedGeometry(), rElementalDofList);
-}
-
-PENALTY_TEMPLATE
 void PENALTY_CLASS::AddResidual(const State<double>& state, const ProcessInfo&, LocalVector<double>& rhs) const {
     const Geometry& slave = this->GetParentGeometry();
     const auto nodal = MakeNodalInterfaceMap<TDim, TNS>(slave, this->NodalShare(), false);
