@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "custom_conditions/alm_frictional_mortar_contact_condition.h"
+#include "custom_conditions/mortar_contact_families.h"
+#include "custom_conditions/mortar_contact_family_condition_impl.h"
 #include "custom_utilities/active_set_utilities.h"
 
 namespace contact_app {
@@ -53,48 +54,26 @@ void AddALMFrictionalResidual(const TState& s, double k, const FrictionalParamet
 
 }  // namespace
 
-#define ALMF_TEMPLATE template <int TDim, int TNS, bool TNV, int TNM>
-#define ALMF_CLASS AugmentedLagrangianMethodFrictionalMortarContactCondition<TDim, TNS, TNV, TNM>
-
-ALMF_TEMPLATE
-Condition::Pointer ALMF_CLASS::Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
-                                      Geometry::Pointer master) const {
-    return std::make_shared<ALMF_CLASS>(new_id, std::move(slave), std::move(properties), std::move(master));
-}
-
-ALMF_TEMPLATE
-template <class T>
-void ALMF_CLASS::AddFrictionalResidual(const State<T>& state, const ProcessInfo& rCurrentProcessInfo,
-                                       LocalVector<T>& rhs) const {
-    const Geometry& slave = this->GetParentGeometry();
-    CONTACT_CHECK(rCurrentProcessInfo.Has(SCALE_FACTOR), InputError, "ALM frictional contact condition ", this->Id(),
-                  ": SCALE_FACTOR is not set in the ProcessInfo\n  fix: run the ALM initialisation (ALMFastInit)",
-                  " or set ProcessInfo[SCALE_FACTOR]");
+/// The ALM frictional family's residual (mortar_contact_families.h).
+template <int TDim, int TNS, bool TNV, int TNM, class TState, class TVector>
+void AddFamilyResidual(const MortarContactFamilyCondition<TDim, TNS, FrictionalCase::FRICTIONAL, TNV, TNM>& rCondition,
+                       const TState& state, const ProcessInfo& rCurrentProcessInfo, TVector& rhs) {
+    using T = typename TVector::Scalar;
+    const Geometry& slave = rCondition.GetParentGeometry();
+    CONTACT_CHECK(rCurrentProcessInfo.Has(SCALE_FACTOR), InputError, "ALM frictional contact condition ",
+                  rCondition.Id(), ": SCALE_FACTOR is not set in the ProcessInfo\n  fix: run the ALM initialisation",
+                  " (ALMFastInit) or set ProcessInfo[SCALE_FACTOR]");
     const double k = rCurrentProcessInfo.GetValue(SCALE_FACTOR);
     // Every node divides by ε (inactive and slip rows) and uses κ (inactive rows, stick penalty, slip trial traction).
-    const auto p = ReadFrictionalParameters<TDim, TNS>(
-        slave, rCurrentProcessInfo, this->Id(), "ALM", [](bool) { return true; }, [](bool, bool) { return true; });
-    const auto slip = this->SlipOfStep(AnyActive(p));
+    const auto p = frictional_detail::ReadFrictionalParameters<TDim, TNS>(
+        slave, rCurrentProcessInfo, rCondition.Id(), "ALM", [](bool) { return true; }, [](bool, bool) { return true; });
+    const auto slip = rCondition.SlipOfStep(frictional_detail::AnyActive(p));
     AddALMFrictionalResidual<T, TDim, TNS, TNM>(
-        state, k, p, slip, MakeNodalInterfaceMap<TDim, TNS>(slave, this->NodalShare(), true), rhs);
+        state, k, p, slip, MakeNodalInterfaceMap<TDim, TNS>(slave, rCondition.NodalShare(), true),
+        rhs);
 }
 
-ALMF_TEMPLATE
-void ALMF_CLASS::AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
-                             LocalVector<double>& rhs) const {
-    AddFrictionalResidual<double>(state, rCurrentProcessInfo, rhs);
-}
-
-ALMF_TEMPLATE
-void ALMF_CLASS::AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
-                             LocalVector<ADScalar>& rhs) const {
-    AddFrictionalResidual<ADScalar>(state, rCurrentProcessInfo, rhs);
-}
-
-#undef ALMF_TEMPLATE
-#undef ALMF_CLASS
-
-CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(AugmentedLagrangianMethodFrictionalMortarContactCondition)
-CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(AugmentedLagrangianMethodFrictionalMortarContactCondition)
+CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(FRICTIONAL)
+CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(FRICTIONAL)
 
 }  // namespace contact_app

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "custom_conditions/alm_frictionless_components_mortar_contact_condition.h"
+#include "custom_conditions/mortar_contact_families.h"
+#include "custom_conditions/mortar_contact_family_condition_impl.h"
 
 #include "custom_conditions/frictionless_mortar_contact_common.h"
 
@@ -39,32 +40,17 @@ void AddFrictionlessComponentsResidual(const TState& s, double k, const NodalPar
 
 }  // namespace
 
-#define ALMC_TEMPLATE template <int TDim, int TNS, bool TNV, int TNM>
-#define ALMC_CLASS AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition<TDim, TNS, TNV, TNM>
-
-ALMC_TEMPLATE
-Condition::Pointer ALMC_CLASS::Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
-                                      Geometry::Pointer master) const {
-    return std::make_shared<ALMC_CLASS>(new_id, std::move(slave), std::move(properties), std::move(master));
+/// The ALM frictionless components family's residual (mortar_contact_families.h).
+template <int TDim, int TNS, bool TNV, int TNM, class TState, class TVector>
+void AddFamilyResidual(
+    const MortarContactFamilyCondition<TDim, TNS, FrictionalCase::FRICTIONLESS_COMPONENTS, TNV, TNM>& rCondition,
+    const TState& state, const ProcessInfo& rCurrentProcessInfo, TVector& rhs) {
+    using T = typename TVector::Scalar;
+    const auto [k, p] =
+        ReadALMParameters<TNS>(rCondition.GetParentGeometry(), rCurrentProcessInfo, rCondition.Id());
+    AddFrictionlessComponentsResidual<T, TDim, TNS, TNM>(state, k, p, rhs);
 }
 
-ALMC_TEMPLATE
-void ALMC_CLASS::AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
-                             LocalVector<double>& rhs) const {
-    const auto [k, p] = ReadALMParameters<TNS>(this->GetParentGeometry(), rCurrentProcessInfo, this->Id());
-    AddFrictionlessComponentsResidual<double, TDim, TNS, TNM>(state, k, p, rhs);
-}
-
-ALMC_TEMPLATE
-void ALMC_CLASS::AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
-                             LocalVector<ADScalar>& rhs) const {
-    const auto [k, p] = ReadALMParameters<TNS>(this->GetParentGeometry(), rCurrentProcessInfo, this->Id());
-    AddFrictionlessComponentsResidual<ADScalar, TDim, TNS, TNM>(state, k, p, rhs);
-}
-
-#undef ALMC_TEMPLATE
-#undef ALMC_CLASS
-
-CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition)
+CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(FRICTIONLESS_COMPONENTS)
 
 }  // namespace contact_app

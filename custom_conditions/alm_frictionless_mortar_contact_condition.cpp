@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "custom_conditions/alm_frictionless_mortar_contact_condition.h"
+#include "custom_conditions/mortar_contact_families.h"
+#include "custom_conditions/mortar_contact_family_condition_impl.h"
 
 #include "custom_conditions/frictionless_mortar_contact_common.h"
 
@@ -26,33 +27,18 @@ void AddFrictionlessResidual(const TState& s, double k, const NodalParameters<TN
 
 }  // namespace
 
-#define ALM_TEMPLATE template <int TDim, int TNS, bool TNV, int TNM>
-#define ALM_CLASS AugmentedLagrangianMethodFrictionlessMortarContactCondition<TDim, TNS, TNV, TNM>
-
-ALM_TEMPLATE
-Condition::Pointer ALM_CLASS::Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
-                                     Geometry::Pointer master) const {
-    return std::make_shared<ALM_CLASS>(new_id, std::move(slave), std::move(properties), std::move(master));
+/// The ALM frictionless family's residual (mortar_contact_families.h).
+template <int TDim, int TNS, bool TNV, int TNM, class TState, class TVector>
+void AddFamilyResidual(
+    const MortarContactFamilyCondition<TDim, TNS, FrictionalCase::FRICTIONLESS, TNV, TNM>& rCondition,
+    const TState& state, const ProcessInfo& rCurrentProcessInfo, TVector& rhs) {
+    using T = typename TVector::Scalar;
+    const auto [k, p] =
+        ReadALMParameters<TNS>(rCondition.GetParentGeometry(), rCurrentProcessInfo, rCondition.Id());
+    AddFrictionlessResidual<T, TDim, TNS, TNM>(state, k, p, rhs);
 }
 
-ALM_TEMPLATE
-void ALM_CLASS::AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
-                            LocalVector<double>& rhs) const {
-    const auto [k, p] = ReadALMParameters<TNS>(this->GetParentGeometry(), rCurrentProcessInfo, this->Id());
-    AddFrictionlessResidual<double, TDim, TNS, TNM>(state, k, p, rhs);
-}
-
-ALM_TEMPLATE
-void ALM_CLASS::AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
-                            LocalVector<ADScalar>& rhs) const {
-    const auto [k, p] = ReadALMParameters<TNS>(this->GetParentGeometry(), rCurrentProcessInfo, this->Id());
-    AddFrictionlessResidual<ADScalar, TDim, TNS, TNM>(state, k, p, rhs);
-}
-
-#undef ALM_TEMPLATE
-#undef ALM_CLASS
-
-CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(AugmentedLagrangianMethodFrictionlessMortarContactCondition)
-CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(AugmentedLagrangianMethodFrictionlessMortarContactCondition)
+CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(FRICTIONLESS)
+CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(FRICTIONLESS)
 
 }  // namespace contact_app

@@ -11,13 +11,9 @@
 #include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/registry.h"
 #include "contact_app/kernel/variables.h"
-#include "custom_conditions/alm_frictionless_components_mortar_contact_condition.h"
-#include "custom_conditions/alm_frictional_mortar_contact_condition.h"
-#include "custom_conditions/alm_frictionless_mortar_contact_condition.h"
 #include "custom_conditions/mesh_tying_mortar_condition.h"
+#include "custom_conditions/mortar_contact_families.h"
 #include "custom_conditions/mpc_mortar_contact_condition.h"
-#include "custom_conditions/penalty_frictional_mortar_contact_condition.h"
-#include "custom_conditions/penalty_frictionless_mortar_contact_condition.h"
 
 namespace contact_app {
 namespace {
@@ -99,7 +95,8 @@ std::shared_ptr<const Condition> MakeFamily(const PairRow& pair, bool nv, bool a
     return MakePlaneFamily<TFamily>(pair, nv, false, std::move(s), std::move(m));
 }
 
-/// The families, the one place to add one (its class file ends with CONTACT_APP_INSTANTIATE_CONTACT_FAMILY).
+/// The families, the one place to add one (mortar_contact_families.h names it; its .cpp defines its AddFamilyResidual
+/// and ends with CONTACT_APP_INSTANTIATE_CONTACT_FAMILY).
 const FamilyRow kFamilies[] = {
     {"ALM", "Frictionless", FrictionalCase::FRICTIONLESS, true,
      MakeFamily<AugmentedLagrangianMethodFrictionlessMortarContactCondition,

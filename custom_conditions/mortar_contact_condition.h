@@ -159,18 +159,19 @@ private:
     InternalError NotInBase(const char* method) const;
 };
 
-/// Explicit instantiations of a contact family TClass<TDim, TNumNodes, TNormalVariation, TNumNodesMaster> for every
-/// registered pair (CONTACT_APP_FOR_EACH_MORTAR_PAIR) × NV; a family's .cpp ends with it.
-#define CONTACT_APP_INSTANTIATE_NV_PAIR_(TClass, D, NS, NM) \
-    template class TClass<D, NS, false, NM>;                \
-    template class TClass<D, NS, true, NM>;
-#define CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(TClass) \
-    CONTACT_APP_FOR_EACH_MORTAR_PAIR(CONTACT_APP_INSTANTIATE_NV_PAIR_, TClass)
-/// Explicit instantiations of the 2D axisymmetric variant of a contact family TClass (MortarContactAxisymCondition of
-/// its 2D2N pair, mortar_contact_axisym_condition.h) × NV.
-#define CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(TClass)                     \
-    template class MortarContactAxisymCondition<TClass<2, 2, false, 2>>; \
-    template class MortarContactAxisymCondition<TClass<2, 2, true, 2>>;
+/// Explicit instantiations of the contact family of friction policy FrictionalCase::CASE (MortarContactFamilyCondition,
+/// mortar_contact_family_condition_impl.h) for every registered pair (CONTACT_APP_FOR_EACH_MORTAR_PAIR) × NV; the
+/// family's .cpp ends with it, after its AddFamilyResidual.
+#define CONTACT_APP_INSTANTIATE_NV_PAIR_(CASE, D, NS, NM)                                  \
+    template class MortarContactFamilyCondition<D, NS, FrictionalCase::CASE, false, NM>; \
+    template class MortarContactFamilyCondition<D, NS, FrictionalCase::CASE, true, NM>;
+#define CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(CASE) \
+    CONTACT_APP_FOR_EACH_MORTAR_PAIR(CONTACT_APP_INSTANTIATE_NV_PAIR_, CASE)
+/// Explicit instantiations of the 2D axisymmetric variant of that family (MortarContactAxisymCondition of its 2D2N
+/// pair, mortar_contact_axisym_condition.h) × NV.
+#define CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(CASE)                                                              \
+    template class MortarContactAxisymCondition<MortarContactFamilyCondition<2, 2, FrictionalCase::CASE, false, 2>>; \
+    template class MortarContactAxisymCondition<MortarContactFamilyCondition<2, 2, FrictionalCase::CASE, true, 2>>;
 /// Explicit instantiations of a family base TBase<TDim, TNumNodes, FrictionalCase, TNormalVariation, TNumNodesMaster>
 /// (MortarContactCondition, MortarContactFamilyCondition) for the five contact families × every registered pair × NV.
 #define CONTACT_APP_INSTANTIATE_FAMILY_BASE_NV_(TBase, FAMILY, D, NS, NM) \

@@ -23,8 +23,13 @@ using MortarContactFamilyBase =
 /// ("previous") mortar operators D_old, M_old of X0 + d(1) with their life cycle and restart state, the objective /
 /// non-objective slip switch recorded in MODIFIED and the frictional checks (frictionless_mortar_contact_common.h,
 /// frictional_mortar_contact_common.h; docs/theory/contact_residuals.md §2, §5, §7), and the DoF list, multiplier
-/// values and multiplier checks, which the policy fixes. A family derives from it and adds only its residual and its
-/// settings. Not registered itself.
+/// values and multiplier checks, which the policy fixes. A family is this class under its Kratos name
+/// (mortar_contact_families.h) with its residual, an overload
+///   template <int TDim, int TNS, bool TNV, int TNM, class TState, class TVector>
+///   void AddFamilyResidual(const MortarContactFamilyCondition<TDim, TNS, FrictionalCase::X, TNV, TNM>& rCondition,
+///                          const TState& state, const ProcessInfo& rCurrentProcessInfo, TVector& rhs);
+/// in namespace contact_app, defined in the family's .cpp, which includes mortar_contact_family_condition_impl.h and
+/// instantiates the class (CONTACT_APP_INSTANTIATE_CONTACT_FAMILY).
 template <int TDim, int TNumNodes, FrictionalCase TFrictional, bool TNormalVariation, int TNumNodesMaster>
 class MortarContactFamilyCondition
     : public MortarContactFamilyBase<TDim, TNumNodes, TFrictional, TNormalVariation, TNumNodesMaster> {
@@ -36,8 +41,20 @@ public:
     /// A family with one multiplier per slave node and dimension (VECTOR_LAGRANGE_MULTIPLIER).
     static constexpr bool HasVectorMultiplier =
         TFrictional == FrictionalCase::FRICTIONAL || TFrictional == FrictionalCase::FRICTIONLESS_COMPONENTS;
+    using typename BaseType::ADScalar;
+    template <class T>
+    using State = typename BaseType::template State<T>;
+    template <class T>
+    using LocalVector = typename BaseType::template LocalVector<T>;
     using BaseType::BaseType;
+    using BaseType::Create;
 
+    /// @param[in] new_id id of the new pair
+    /// @param[in] slave,master the faces of the new pair (shared)
+    /// @param[in] properties its properties (shared)
+    /// @return a new pair of this family
+    Condition::Pointer Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
+                              Geometry::Pointer master) const override;
     /// Base reset plus (Coulomb) the previous operators (zero, not initialized).
     void Initialize(const ProcessInfo& rCurrentProcessInfo) override;
     /// Coulomb: computes the start-of-step operators once per step (X0 + d(1)).
@@ -66,6 +83,9 @@ public:
     /// Paired-condition state plus (Coulomb) the previous operators and their flags (restart with a consistent slip).
     void Save(Serializer& rSerializer) const override;
     void Load(Serializer& rSerializer) override;
+    /// Coulomb: what the family residual measures the slip of the step with (frictional_detail::MakeSlipData).
+    /// @param[in] needs_slip whether some slave node is active (only then are the start-of-step coordinates read)
+    frictional_detail::SlipData<TDim, TNumNodes, TNumNodesMaster> SlipOfStep(bool needs_slip) const;
 
 protected:
     /// The λ block of q, in GetDofList's order (empty for a penalty family).
@@ -73,9 +93,12 @@ protected:
     /// Coulomb: records the objective switch of this configuration in MODIFIED.
     void InitializeResidual(const MortarOperators<double, TNumNodes, TNumNodesMaster>& operators,
                             const ProcessInfo& rCurrentProcessInfo) override;
-    /// Coulomb: what the family residual measures the slip of the step with (frictional_detail::MakeSlipData).
-    /// @param[in] needs_slip whether some slave node is active (only then are the start-of-step coordinates read)
-    frictional_detail::SlipData<TDim, TNumNodes, TNumNodesMaster> SlipOfStep(bool needs_slip) const;
+    /// The family's residual for the double and the AD scalar alike: the AddFamilyResidual overload of this friction
+    /// policy, defined in the family's .cpp (mortar_contact_families.h), which instantiates the class.
+    void AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
+                     LocalVector<double>& rhs) const override;
+    void AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
+                     LocalVector<ADScalar>& rhs) const override;
 
 private:
     /// The start-of-step operators of a Coulomb family (nothing for a frictionless one).

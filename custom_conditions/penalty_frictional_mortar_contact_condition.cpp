@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "custom_conditions/penalty_frictional_mortar_contact_condition.h"
+#include "custom_conditions/mortar_contact_families.h"
+#include "custom_conditions/mortar_contact_family_condition_impl.h"
 
 #include <type_traits>
 
@@ -78,46 +79,24 @@ Eigen::Matrix<double, TNS, TDim> ElasticSlips(const Geometry& slave) {
 
 }  // namespace
 
-#define PENF_TEMPLATE template <int TDim, int TNS, bool TNV, int TNM>
-#define PENF_CLASS PenaltyMethodFrictionalMortarContactCondition<TDim, TNS, TNV, TNM>
-
-PENF_TEMPLATE
-Condition::Pointer PENF_CLASS::Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
-                                      Geometry::Pointer master) const {
-    return std::make_shared<PENF_CLASS>(new_id, std::move(slave), std::move(properties), std::move(master));
-}
-
-PENF_TEMPLATE
-template <class T>
-void PENF_CLASS::AddFrictionalResidual(const State<T>& state, const ProcessInfo& rCurrentProcessInfo,
-                                       LocalVector<T>& rhs) const {
-    // ε and κ on the active nodes (the inactive ones add nothing).
-    const Geometry& slave = this->GetParentGeometry();
-    const auto p = ReadFrictionalParameters<TDim, TNS>(
-        slave, rCurrentProcessInfo, this->Id(), "Penalty", [](bool active) { return active; },
+/// The penalty frictional family's residual (mortar_contact_families.h): ε and κ on the active nodes (the inactive
+/// ones add nothing).
+template <int TDim, int TNS, bool TNV, int TNM, class TState, class TVector>
+void AddFamilyResidual(
+    const MortarContactFamilyCondition<TDim, TNS, FrictionalCase::FRICTIONAL_PENALTY, TNV, TNM>& rCondition,
+    const TState& state, const ProcessInfo& rCurrentProcessInfo, TVector& rhs) {
+    using T = typename TVector::Scalar;
+    const Geometry& slave = rCondition.GetParentGeometry();
+    const auto p = frictional_detail::ReadFrictionalParameters<TDim, TNS>(
+        slave, rCurrentProcessInfo, rCondition.Id(), "Penalty", [](bool active) { return active; },
         [](bool active, bool) { return active; });
-    const auto slip = this->SlipOfStep(AnyActive(p));
-    AddPenaltyFrictionalResidual<T, TDim, TNS, TNM>(state, p, slip,
-                                                    MakeNodalInterfaceMap<TDim, TNS>(slave, this->NodalShare(), true),
-                                                    ElasticSlips<TDim, TNS>(slave), rhs, this->MutableCouplingRecord());
+    const auto slip = rCondition.SlipOfStep(frictional_detail::AnyActive(p));
+    AddPenaltyFrictionalResidual<T, TDim, TNS, TNM>(
+        state, p, slip, MakeNodalInterfaceMap<TDim, TNS>(slave, rCondition.NodalShare(), true),
+        ElasticSlips<TDim, TNS>(slave), rhs, rCondition.MutableCouplingRecord());
 }
 
-PENF_TEMPLATE
-void PENF_CLASS::AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
-                             LocalVector<double>& rhs) const {
-    AddFrictionalResidual<double>(state, rCurrentProcessInfo, rhs);
-}
-
-PENF_TEMPLATE
-void PENF_CLASS::AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
-                             LocalVector<ADScalar>& rhs) const {
-    AddFrictionalResidual<ADScalar>(state, rCurrentProcessInfo, rhs);
-}
-
-#undef PENF_TEMPLATE
-#undef PENF_CLASS
-
-CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(PenaltyMethodFrictionalMortarContactCondition)
-CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(PenaltyMethodFrictionalMortarContactCondition)
+CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(FRICTIONAL_PENALTY)
+CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(FRICTIONAL_PENALTY)
 
 }  // namespace contact_app

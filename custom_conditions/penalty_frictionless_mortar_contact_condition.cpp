@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "custom_conditions/penalty_frictionless_mortar_contact_condition.h"
+#include "custom_conditions/mortar_contact_families.h"
+#include "custom_conditions/mortar_contact_family_condition_impl.h"
 
 #include <type_traits>
 
@@ -41,35 +42,19 @@ NodalParameters<TNumNodes> ReadParameters(const Geometry& slave, IndexType id) {
 
 }  // namespace
 
-#define PENALTY_TEMPLATE template <int TDim, int TNS, bool TNV, int TNM>
-#define PENALTY_CLASS PenaltyMethodFrictionlessMortarContactCondition<TDim, TNS, TNV, TNM>
-
-PENALTY_TEMPLATE
-Condition::Pointer PENALTY_CLASS::Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
-                                         Geometry::Pointer master) const {
-    return std::make_shared<PENALTY_CLASS>(new_id, std::move(slave), std::move(properties), std::move(master));
+/// The penalty frictionless family's residual (mortar_contact_families.h).
+template <int TDim, int TNS, bool TNV, int TNM, class TState, class TVector>
+void AddFamilyResidual(
+    const MortarContactFamilyCondition<TDim, TNS, FrictionalCase::FRICTIONLESS_PENALTY, TNV, TNM>& rCondition,
+    const TState& state, const ProcessInfo& rCurrentProcessInfo, TVector& rhs) {
+    using T = typename TVector::Scalar;
+    const Geometry& slave = rCondition.GetParentGeometry();
+    const auto nodal = MakeNodalInterfaceMap<TDim, TNS>(slave, rCondition.NodalShare(), false);
+    AddPenaltyFrictionlessResidual<T, TDim, TNS, TNM>(state, ReadParameters<TNS>(slave, rCondition.Id()), nodal, rhs,
+                                                      rCondition.MutableCouplingRecord());
 }
 
-PENALTY_TEMPLATE
-void PENALTY_CLASS::AddResidual(const State<double>& state, const ProcessInfo&, LocalVector<double>& rhs) const {
-    const Geometry& slave = this->GetParentGeometry();
-    const auto nodal = MakeNodalInterfaceMap<TDim, TNS>(slave, this->NodalShare(), false);
-    AddPenaltyFrictionlessResidual<double, TDim, TNS, TNM>(state, ReadParameters<TNS>(slave, this->Id()), nodal, rhs,
-                                                           this->MutableCouplingRecord());
-}
-
-PENALTY_TEMPLATE
-void PENALTY_CLASS::AddResidual(const State<ADScalar>& state, const ProcessInfo&, LocalVector<ADScalar>& rhs) const {
-    const Geometry& slave = this->GetParentGeometry();
-    const auto nodal = MakeNodalInterfaceMap<TDim, TNS>(slave, this->NodalShare(), false);
-    AddPenaltyFrictionlessResidual<ADScalar, TDim, TNS, TNM>(state, ReadParameters<TNS>(slave, this->Id()), nodal, rhs,
-                                                             this->MutableCouplingRecord());
-}
-
-#undef PENALTY_TEMPLATE
-#undef PENALTY_CLASS
-
-CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(PenaltyMethodFrictionlessMortarContactCondition)
-CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(PenaltyMethodFrictionlessMortarContactCondition)
+CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(FRICTIONLESS_PENALTY)
+CONTACT_APP_INSTANTIATE_AXISYM_FAMILY(FRICTIONLESS_PENALTY)
 
 }  // namespace contact_app

@@ -38,11 +38,12 @@ public:
                rCurrentProcessInfo.GetValue(CONSIDER_NORMAL_VARIATION) != 0;
     }
 
+    using CouplingRecord = NodalGapCouplingRecord<TDim, TNumNodes, BaseType::MatrixSize>;
+    /// Written by the family's (const) AD residual (AddFamilyResidual, mortar_contact_family_condition.h).
+    CouplingRecord* MutableCouplingRecord() const { return &mCouplingRecord; }
+
 protected:
     void AfterNormalPass() override { mCouplingRecord.KeepNormalGradients(); }
-    using CouplingRecord = NodalGapCouplingRecord<TDim, TNumNodes, BaseType::MatrixSize>;
-    /// Written by the family's (const) AD residual.
-    CouplingRecord* MutableCouplingRecord() const { return &mCouplingRecord; }
 
 private:
     mutable CouplingRecord mCouplingRecord;

@@ -1,12 +1,36 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// The member definitions of MortarContactFamilyCondition. Only the families' .cpp files include this: each defines
+/// its AddFamilyResidual overload, then instantiates the class for its friction policy
+/// (CONTACT_APP_INSTANTIATE_CONTACT_FAMILY), so AddResidual finds that overload (argument-dependent lookup at the
+/// point of instantiation) and every other translation unit sees declarations only.
+#include <memory>
+#include <utility>
+
 #include "custom_conditions/mortar_contact_family_condition.h"
 
 namespace contact_app {
 
-using namespace frictional_detail;
-
 #define FAMILY_TEMPLATE template <int TDim, int TNS, FrictionalCase TF, bool TNV, int TNM>
 #define FAMILY_CLASS MortarContactFamilyCondition<TDim, TNS, TF, TNV, TNM>
+
+FAMILY_TEMPLATE
+Condition::Pointer FAMILY_CLASS::Create(IndexType new_id, Geometry::Pointer slave, Properties::Pointer properties,
+                                       Geometry::Pointer master) const {
+    return std::make_shared<FAMILY_CLASS>(new_id, std::move(slave), std::move(properties), std::move(master));
+}
+
+FAMILY_TEMPLATE
+void FAMILY_CLASS::AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
+                               LocalVector<double>& rhs) const {
+    AddFamilyResidual(*this, state, rCurrentProcessInfo, rhs);
+}
+
+FAMILY_TEMPLATE
+void FAMILY_CLASS::AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
+                               LocalVector<ADScalar>& rhs) const {
+    AddFamilyResidual(*this, state, rCurrentProcessInfo, rhs);
+}
 
 FAMILY_TEMPLATE
 void FAMILY_CLASS::Initialize(const ProcessInfo& rCurrentProcessInfo) {
@@ -18,7 +42,8 @@ FAMILY_TEMPLATE
 void FAMILY_CLASS::InitializeSolutionStep(const ProcessInfo& rCurrentProcessInfo) {
     BaseType::InitializeSolutionStep(rCurrentProcessInfo);
     if constexpr (IsFrictional)
-        ComputePreviousOperatorsOnce<TDim, TNS, TNM>(*this, rCurrentProcessInfo, mPreviousMortarOperators);
+        frictional_detail::ComputePreviousOperatorsOnce<TDim, TNS, TNM>(*this, rCurrentProcessInfo,
+                                                                        mPreviousMortarOperators);
 }
 
 FAMILY_TEMPLATE
@@ -30,17 +55,18 @@ void FAMILY_CLASS::FinalizeSolutionStep(const ProcessInfo& rCurrentProcessInfo) 
 FAMILY_TEMPLATE
 int FAMILY_CLASS::GetActiveInactiveValue() const {
     if constexpr (IsFrictional)
-        return FrictionalStateValue<TNS>(this->GetParentGeometry());
+        return frictional_detail::FrictionalStateValue<TNS>(this->GetParentGeometry());
     else
-        return ActiveNodesValue<TNS>(this->GetParentGeometry());
+        return frictional_detail::ActiveNodesValue<TNS>(this->GetParentGeometry());
 }
 
 FAMILY_TEMPLATE
 void FAMILY_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) {
     if constexpr (IsFrictional)
-        AddFrictionalExplicitContribution<TDim, TNS, TNM>(*this, rCurrentProcessInfo, mPreviousMortarOperators);
+        frictional_detail::AddFrictionalExplicitContribution<TDim, TNS, TNM>(*this, rCurrentProcessInfo,
+                                                                             mPreviousMortarOperators);
     else
-        AddFrictionlessExplicitContribution<TDim, TNS, TNM>(*this, rCurrentProcessInfo);
+        frictional_detail::AddFrictionlessExplicitContribution<TDim, TNS, TNM>(*this, rCurrentProcessInfo);
 }
 
 FAMILY_TEMPLATE
@@ -55,10 +81,10 @@ int FAMILY_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
                           " lacks LAGRANGE_MULTIPLIER_CONTACT_PRESSURE (historical variable and DoF)",
                           "\n  fix: use mortar_type \"ALMContactFrictionless\" so the solver adds them");
     if constexpr (TF == FrictionalCase::FRICTIONLESS_COMPONENTS)
-        CheckVectorMultiplier<TDim, TNS>(slave, this->Id(), "ALMContactFrictionlessComponents");
+        frictional_detail::CheckVectorMultiplier<TDim, TNS>(slave, this->Id(), "ALMContactFrictionlessComponents");
     if constexpr (TF == FrictionalCase::FRICTIONAL)
-        CheckVectorMultiplier<TDim, TNS>(slave, this->Id(), "ALMContactFrictional");
-    if constexpr (IsFrictional) CheckFrictionalVariables<TDim, TNS>(slave, this->Id());
+        frictional_detail::CheckVectorMultiplier<TDim, TNS>(slave, this->Id(), "ALMContactFrictional");
+    if constexpr (IsFrictional) frictional_detail::CheckFrictionalVariables<TDim, TNS>(slave, this->Id());
     return 0;
 }
 
@@ -67,8 +93,9 @@ void FAMILY_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessIn
     const Geometry& slave = this->GetParentGeometry();
     rElementalDofList.clear();
     rElementalDofList.reserve(BaseType::MatrixSize);
-    AppendDisplacementDofs<TDim, TNS, TNM>(slave, this->GetPairedGeometry(), rElementalDofList);
-    if constexpr (HasVectorMultiplier) AppendVectorMultiplierDofs<TDim, TNS>(slave, rElementalDofList);
+    frictional_detail::AppendDisplacementDofs<TDim, TNS, TNM>(slave, this->GetPairedGeometry(), rElementalDofList);
+    if constexpr (HasVectorMultiplier)
+        frictional_detail::AppendVectorMultiplierDofs<TDim, TNS>(slave, rElementalDofList);
     if constexpr (TF == FrictionalCase::FRICTIONLESS)
         for (int j = 0; j < TNS; ++j)
             rElementalDofList.push_back(&slave[j].GetDof(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE));
@@ -78,7 +105,7 @@ FAMILY_TEMPLATE
 typename FAMILY_CLASS::BaseType::MultiplierVector FAMILY_CLASS::MultiplierValues() const {
     const Geometry& slave = this->GetParentGeometry();
     if constexpr (HasVectorMultiplier) {
-        return VectorMultiplierValues<TDim, TNS, typename BaseType::MultiplierVector>(slave);
+        return frictional_detail::VectorMultiplierValues<TDim, TNS, typename BaseType::MultiplierVector>(slave);
     } else if constexpr (TF == FrictionalCase::FRICTIONLESS) {
         typename BaseType::MultiplierVector lambda;
         for (int j = 0; j < TNS; ++j)
@@ -105,21 +132,18 @@ FAMILY_TEMPLATE
 void FAMILY_CLASS::InitializeResidual(const MortarOperators<double, TNS, TNM>& operators,
                                       const ProcessInfo& rCurrentProcessInfo) {
     if constexpr (IsFrictional)
-        this->Set(MODIFIED, !IsObjective(operators, mPreviousMortarOperators, rCurrentProcessInfo));
+        this->Set(MODIFIED, !frictional_detail::IsObjective(operators, mPreviousMortarOperators, rCurrentProcessInfo));
 }
 
 FAMILY_TEMPLATE
-SlipData<TDim, TNS, TNM> FAMILY_CLASS::SlipOfStep(bool needs_slip) const {
+frictional_detail::SlipData<TDim, TNS, TNM> FAMILY_CLASS::SlipOfStep(bool needs_slip) const {
     if constexpr (IsFrictional)
-        return MakeSlipData<TDim, TNS, TNM>(*this, mPreviousMortarOperators, needs_slip);
+        return frictional_detail::MakeSlipData<TDim, TNS, TNM>(*this, mPreviousMortarOperators, needs_slip);
     else
-        return SlipData<TDim, TNS, TNM>{};  // a frictionless family measures no slip
+        return frictional_detail::SlipData<TDim, TNS, TNM>{};  // a frictionless family measures no slip
 }
 
 #undef FAMILY_TEMPLATE
 #undef FAMILY_CLASS
-
-// -- Explicit instantiations: the registered pairs of the five families, with and without NV --
-CONTACT_APP_INSTANTIATE_FAMILY_BASE(MortarContactFamilyCondition)
 
 }  // namespace contact_app
