@@ -131,6 +131,16 @@ public:
     /// @brief e.g. "TotalLagrangianElement2D4N #3 (Quadrilateral2D4)".
     std::string Info() const override;
 
+    // What a formulation's kinematics read (ComputeSolidKinematics, solid_element.h).
+    /// @brief The reference data of integration point @p point (0 ≤ point < its count).
+    const auto& GetReferencePoint(std::size_t point) const { return mReferencePoints[point]; }
+    /// @brief Node coordinates, one row per node (first TDim components).
+    NodalMatrix NodalCoordinates(Geometry::Configuration configuration) const;
+    /// @brief Nodal DISPLACEMENT at buffer step @p step, one row per node.
+    NodalMatrix NodalDisplacements(std::size_t step) const;
+    /// @brief THICKNESS in 2D (1 if absent), 1 in 3D.
+    double ThicknessFactor() const;
+
 protected:
     /// Reference data of one integration point of the stiffness rule, cached by Initialize().
     struct ReferencePoint {
@@ -155,13 +165,6 @@ protected:
     virtual void ComputeKinematics(std::size_t point, Kinematics& rKinematics) const = 0;
 
     std::size_t NumberOfIntegrationPoints() const { return mReferencePoints.size(); }
-    const ReferencePoint& GetReferencePoint(std::size_t point) const { return mReferencePoints[point]; }
-    /// @brief Node coordinates, one row per node (first TDim components).
-    NodalMatrix NodalCoordinates(Geometry::Configuration configuration) const;
-    /// @brief Nodal DISPLACEMENT at buffer step @p step, one row per node.
-    NodalMatrix NodalDisplacements(std::size_t step) const;
-    /// @brief THICKNESS in 2D (1 if absent), 1 in 3D.
-    double ThicknessFactor() const;
     /// @brief Reference-volume factor per unit reference measure: 2πR (axisymmetric, R = Σ N_k X_k) or
     ///        ThicknessFactor().
     double ReferenceVolumeFactor(const ShapeVector& N) const;

@@ -6,10 +6,7 @@
 #include "contact_app/kernel/geometries/geometry_factory.h"
 #include "contact_app/kernel/node.h"
 #include "contact_app/kernel/registry.h"
-#include "contact_app/structural/elements/axisym_small_displacement_element.h"
-#include "contact_app/structural/elements/axisym_total_lagrangian_element.h"
-#include "contact_app/structural/elements/small_displacement_element.h"
-#include "contact_app/structural/elements/total_lagrangian_element.h"
+#include "contact_app/structural/elements/solid_element.h"
 #include "contact_app/structural/elements/updated_lagrangian_element.h"
 #include "contact_app/structural/structural_registration.h"
 
