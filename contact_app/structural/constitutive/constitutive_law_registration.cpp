@@ -3,9 +3,7 @@
 #include <memory>
 
 #include "contact_app/kernel/registry.h"
-#include "contact_app/structural/constitutive/hyper_elastic_law.h"
-#include "contact_app/structural/constitutive/kirchhoff_saint_venant_law.h"
-#include "contact_app/structural/constitutive/linear_elastic_law.h"
+#include "contact_app/structural/constitutive/elastic_law.h"
 #include "contact_app/structural/structural_registration.h"
 
 namespace contact_app {
