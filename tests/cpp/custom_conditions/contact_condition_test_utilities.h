@@ -3,11 +3,14 @@
 /// built from coordinate tables, the registered names.
 #pragma once
 
+#include <algorithm>
+#include <random>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "../custom_utilities/mortar_test_utilities.h"
 #include "contact_app/application.h"
 #include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/geometries/geometry_factory.h"
@@ -33,6 +36,43 @@ inline const ContactConditionName& DecodedName(const std::string& name) {
 
 inline std::string FaceGeometryName(int dim, int num_nodes) {
     return dim == 2 ? "Line2D2" : (num_nodes == 3 ? "Triangle3D3" : "Quadrilateral3D4");
+}
+
+/// Random slave and master face coordinates of the pair kind TPair (a positive radius in axisymmetry).
+template <class TPair>
+void RandomCoordinates(std::mt19937& rng, bool axisym, Eigen::MatrixXd& slave, Eigen::MatrixXd& master) {
+    const auto pair = MakeRandomPair<TPair>(rng, 0.3, !axisym);
+    slave = pair.slave;
+    master = pair.master;
+    if (axisym) {  // positive radius
+        slave.col(0).array() += 2.0;
+        master.col(0).array() += 2.0;
+    }
+}
+
+/// Random coordinates for the pair kind of the registered name @p row.
+inline void RandomPairCoordinates(const ContactConditionName& row, std::mt19937& rng, Eigen::MatrixXd& s, Eigen::MatrixXd& m) {
+    if (row.dim == 2)
+        RandomCoordinates<MortarPairTraits<2, 2, 2>>(rng, row.axisymmetric, s, m);
+    else if (row.num_slave == 3 && row.num_master == 3)
+        RandomCoordinates<MortarPairTraits<3, 3, 3>>(rng, false, s, m);
+    else if (row.num_slave == 4 && row.num_master == 4)
+        RandomCoordinates<MortarPairTraits<3, 4, 4>>(rng, false, s, m);
+    else if (row.num_slave == 3)
+        RandomCoordinates<MortarPairTraits<3, 3, 4>>(rng, false, s, m);
+    else
+        RandomCoordinates<MortarPairTraits<3, 4, 3>>(rng, false, s, m);
+}
+
+/// max over rows of ‖LHS_i − FD_i‖ / max(‖LHS_i‖, 1e−3·max_k ‖LHS_k‖): every row is measured against its own
+/// size (no entry dominates); rows that vanish analytically (D is diagonal with dual multipliers) are compared
+/// at 1e−3 of the largest row, above the FD round-off.
+inline double RowwiseRelativeError(const Matrix& lhs, const Matrix& fd) {
+    double worst = 0.0;
+    const double floor = 1e-3 * lhs.rowwise().norm().maxCoeff();
+    for (Eigen::Index i = 0; i < lhs.rows(); ++i)
+        worst = std::max(worst, (lhs.row(i) - fd.row(i)).norm() / std::max(lhs.row(i).norm(), floor));
+    return worst;
 }
 
 /// Nodal (rows) and centre unit normals of the slave face from its current coordinates.

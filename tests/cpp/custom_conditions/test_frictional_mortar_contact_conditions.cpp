@@ -18,30 +18,6 @@
 namespace contact_app::testing {
 namespace {
 
-template <class TPair>
-void RandomCoordinates(std::mt19937& rng, bool axisym, Eigen::MatrixXd& slave, Eigen::MatrixXd& master) {
-    const auto pair = MakeRandomPair<TPair>(rng, 0.3, !axisym);
-    slave = pair.slave;
-    master = pair.master;
-    if (axisym) {  // positive radius
-        slave.col(0).array() += 2.0;
-        master.col(0).array() += 2.0;
-    }
-}
-
-void RandomPairCoordinates(const ContactConditionName& row, std::mt19937& rng, Eigen::MatrixXd& s, Eigen::MatrixXd& m) {
-    if (row.dim == 2)
-        RandomCoordinates<MortarPairTraits<2, 2, 2>>(rng, row.axisymmetric, s, m);
-    else if (row.num_slave == 3 && row.num_master == 3)
-        RandomCoordinates<MortarPairTraits<3, 3, 3>>(rng, false, s, m);
-    else if (row.num_slave == 4 && row.num_master == 4)
-        RandomCoordinates<MortarPairTraits<3, 4, 4>>(rng, false, s, m);
-    else if (row.num_slave == 3)
-        RandomCoordinates<MortarPairTraits<3, 3, 4>>(rng, false, s, m);
-    else
-        RandomCoordinates<MortarPairTraits<3, 4, 3>>(rng, false, s, m);
-}
-
 bool IsPenalty(const ContactConditionName& row) {
     return row.family == "PenaltyFrictional";
 }
@@ -98,16 +74,6 @@ void Perturb(const LocalDof& dof, double h) {
         dof.node->Coordinates()[dof.component] += h;
         dof.node->FastGetSolutionStepValue(DISPLACEMENT)[dof.component] += h;
     }
-}
-
-/// Row-wise relative error of the frictionless tests: every row against its own size, vanishing rows against
-/// 1e−3 of the largest one.
-double RowwiseRelativeError(const Matrix& lhs, const Matrix& fd) {
-    double worst = 0.0;
-    const double floor = 1e-3 * lhs.rowwise().norm().maxCoeff();
-    for (Eigen::Index i = 0; i < lhs.rows(); ++i)
-        worst = std::max(worst, (lhs.row(i) - fd.row(i)).norm() / std::max(lhs.row(i).norm(), floor));
-    return worst;
 }
 
 /// Moves every node to X0 + d(0) with the step start at X0 + d(1): d(1) random (0.02), d(0) = d(1) + a random

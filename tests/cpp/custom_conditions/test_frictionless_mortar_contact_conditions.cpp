@@ -16,25 +16,6 @@
 namespace contact_app::testing {
 namespace {
 
-template <class TPair>
-void RandomCoordinates(std::mt19937& rng, bool axisym, Eigen::MatrixXd& slave, Eigen::MatrixXd& master) {
-    const auto pair = MakeRandomPair<TPair>(rng, 0.3, !axisym);
-    slave = pair.slave;
-    master = pair.master;
-    if (axisym) {  // positive radius
-        slave.col(0).array() += 2.0;
-        master.col(0).array() += 2.0;
-    }
-}
-
-void RandomPairCoordinates(const ContactConditionName& row, std::mt19937& rng, Eigen::MatrixXd& s, Eigen::MatrixXd& m) {
-    if (row.dim == 2) RandomCoordinates<MortarPairTraits<2, 2, 2>>(rng, row.axisymmetric, s, m);
-    else if (row.num_slave == 3 && row.num_master == 3) RandomCoordinates<MortarPairTraits<3, 3, 3>>(rng, false, s, m);
-    else if (row.num_slave == 4 && row.num_master == 4) RandomCoordinates<MortarPairTraits<3, 4, 4>>(rng, false, s, m);
-    else if (row.num_slave == 3) RandomCoordinates<MortarPairTraits<3, 3, 4>>(rng, false, s, m);
-    else RandomCoordinates<MortarPairTraits<3, 4, 3>>(rng, false, s, m);
-}
-
 bool IsPenalty(const ContactConditionName& row) { return row.family == "PenaltyFrictionless"; }
 bool IsComponents(const ContactConditionName& row) { return row.family == "ALMFrictionlessComponents"; }
 
@@ -88,17 +69,6 @@ void Perturb(const LocalDof& dof, double h) {
         dof.node->Coordinates()[dof.component] += h;
         dof.node->FastGetSolutionStepValue(DISPLACEMENT)[dof.component] += h;
     }
-}
-
-/// max over rows of ‖LHS_i − FD_i‖ / max(‖LHS_i‖, 1e−3·max_k ‖LHS_k‖): every row is measured against its own
-/// size (no entry dominates); rows that vanish analytically (D is diagonal with dual multipliers) are compared
-/// at 1e−3 of the largest row, above the FD round-off.
-double RowwiseRelativeError(const Matrix& lhs, const Matrix& fd) {
-    double worst = 0.0;
-    const double floor = 1e-3 * lhs.rowwise().norm().maxCoeff();
-    for (Eigen::Index i = 0; i < lhs.rows(); ++i)
-        worst = std::max(worst, (lhs.row(i) - fd.row(i)).norm() / std::max(lhs.row(i).norm(), floor));
-    return worst;
 }
 
 /// GetActiveInactiveValue through the mortar base of whichever registered instantiation @p c is.
