@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_utilities/mortar_explicit_contribution.h"
 
+#include <utility>
+
 #include "custom_utilities/mortar_geometry_math.h"
 
 namespace contact_app {
@@ -40,19 +42,32 @@ NodeCoordinates<T, TDim, TNS> WeightedSlip(const MortarOperators<T, TNS, TNM>& o
     return slip;
 }
 
+namespace {
+
+/// What every explicit pass writes (isolation, dual basis, weighted gap, nodal area), and the pair it integrated.
+template <int TDim, int TNS, int TNM, class T, class TNormal>
+auto ExplicitGapPart(const MortarIntegrator<TDim, TNS, TNM, T>& integrator, const NodeCoordinates<T, TDim, TNS>& x1,
+                     const SpatialVector<TNormal, TDim>& slave_normal, const NodeCoordinates<T, TDim, TNM>& x2,
+                     const NodeCoordinates<TNormal, TDim, TNS>& normals, const ExplicitContributionOptions& options) {
+    ExplicitMortarContribution<T, TDim, TNS> result;
+    auto pair = IntegrateMortarPair(integrator, x1, slave_normal, x2, normals, options.dual_lm);
+    if (pair.used) {
+        result.isolated = false;
+        result.dual = pair.dual.dual;
+        result.weighted_gap = WeightedGap<TDim, TNS, TNM, T, TNormal>(pair.operators, x1, x2, normals);
+        if (options.compute_nodal_area) result.nodal_area = pair.operators.D.rowwise().sum();
+    }
+    return std::make_pair(std::move(result), std::move(pair));
+}
+
+}  // namespace
+
 template <int TDim, int TNS, int TNM, class T, class TNormal>
 ExplicitMortarContribution<T, TDim, TNS> ComputeExplicitMortarContribution(
     const MortarIntegrator<TDim, TNS, TNM, T>& integrator, const NodeCoordinates<T, TDim, TNS>& x1,
     const SpatialVector<TNormal, TDim>& slave_normal, const NodeCoordinates<T, TDim, TNM>& x2,
     const NodeCoordinates<TNormal, TDim, TNS>& normals, const ExplicitContributionOptions& options) {
-    ExplicitMortarContribution<T, TDim, TNS> result;
-    const auto pair = IntegrateMortarPair(integrator, x1, slave_normal, x2, normals, options.dual_lm);
-    if (!pair.used) return result;
-    result.isolated = false;
-    result.dual = pair.dual.dual;
-    result.weighted_gap = WeightedGap<TDim, TNS, TNM, T, TNormal>(pair.operators, x1, x2, normals);
-    if (options.compute_nodal_area) result.nodal_area = pair.operators.D.rowwise().sum();
-    return result;
+    return ExplicitGapPart(integrator, x1, slave_normal, x2, normals, options).first;
 }
 
 template <int TDim, int TNS, int TNM, class T, class TNormal>
@@ -62,15 +77,10 @@ ExplicitMortarContribution<T, TDim, TNS> ComputeExplicitFrictionalMortarContribu
     const NodeCoordinates<TNormal, TDim, TNS>& normals, const MortarOperators<double, TNS, TNM>& previous,
     const NodeCoordinates<double, TDim, TNS>& x1_previous, const NodeCoordinates<double, TDim, TNM>& x2_previous,
     double delta_time, bool objective, const ExplicitContributionOptions& options) {
-    ExplicitMortarContribution<T, TDim, TNS> result;
-    const auto pair = IntegrateMortarPair(integrator, x1, slave_normal, x2, normals, options.dual_lm);
-    if (!pair.used) return result;
-    result.isolated = false;
-    result.dual = pair.dual.dual;
-    result.weighted_gap = WeightedGap<TDim, TNS, TNM, T, TNormal>(pair.operators, x1, x2, normals);
-    result.weighted_slip = WeightedSlip<TDim, TNS, TNM, T, TNormal>(pair.operators, previous, x1, x2, x1_previous,
-                                                                   x2_previous, normals, delta_time, objective);
-    if (options.compute_nodal_area) result.nodal_area = pair.operators.D.rowwise().sum();
+    auto [result, pair] = ExplicitGapPart(integrator, x1, slave_normal, x2, normals, options);
+    if (pair.used)
+        result.weighted_slip = WeightedSlip<TDim, TNS, TNM, T, TNormal>(pair.operators, previous, x1, x2, x1_previous,
+                                                                       x2_previous, normals, delta_time, objective);
     return result;
 }
 
