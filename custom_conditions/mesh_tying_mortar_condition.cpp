@@ -191,12 +191,6 @@ void TYING_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Pro
 }
 
 TYING_TEMPLATE
-void TYING_CLASS::CalculateMassMatrix(Matrix& rMassMatrix, const ProcessInfo&) { rMassMatrix.resize(0, 0); }
-
-TYING_TEMPLATE
-void TYING_CLASS::CalculateDampingMatrix(Matrix& rDampingMatrix, const ProcessInfo&) { rDampingMatrix.resize(0, 0); }
-
-TYING_TEMPLATE
 void TYING_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&) const {
     const auto& tied = TiedVariables();
     const Geometry& slave = GetParentGeometry();
@@ -217,27 +211,6 @@ void TYING_CLASS::EquationIdVector(EquationIdVectorType& rResult, const ProcessI
     GetDofList(dofs, rCurrentProcessInfo);
     rResult.resize(dofs.size());
     for (std::size_t i = 0; i < dofs.size(); ++i) rResult[i] = dofs[i]->EquationId();
-}
-
-TYING_TEMPLATE
-void TYING_CLASS::CalculateOnIntegrationPoints(const Variable<double>&, std::vector<double>& rOutput,
-                                               const ProcessInfo&) {
-    const Geometry& slave = GetParentGeometry();
-    rOutput.assign(slave.IntegrationPoints(slave.DefaultIntegrationOrder()).size(), 0.0);
-}
-
-TYING_TEMPLATE
-void TYING_CLASS::CalculateOnIntegrationPoints(const Variable<Array3>&, std::vector<Array3>& rOutput,
-                                               const ProcessInfo&) {
-    const Geometry& slave = GetParentGeometry();
-    rOutput.assign(slave.IntegrationPoints(slave.DefaultIntegrationOrder()).size(), Array3::Zero());
-}
-
-TYING_TEMPLATE
-void TYING_CLASS::CalculateOnIntegrationPoints(const Variable<Vector>&, std::vector<Vector>& rOutput,
-                                               const ProcessInfo&) {
-    const Geometry& slave = GetParentGeometry();
-    rOutput.assign(slave.IntegrationPoints(slave.DefaultIntegrationOrder()).size(), Vector::Zero(TDim));
 }
 
 TYING_TEMPLATE

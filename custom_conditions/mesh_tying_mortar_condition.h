@@ -43,21 +43,10 @@ public:
                               const ProcessInfo& rCurrentProcessInfo) override;
     void CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) override;
     void CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo& rCurrentProcessInfo) override;
-    /// 0×0: no inertia.
-    void CalculateMassMatrix(Matrix& rMassMatrix, const ProcessInfo& rCurrentProcessInfo) override;
-    /// 0×0: no damping.
-    void CalculateDampingMatrix(Matrix& rDampingMatrix, const ProcessInfo& rCurrentProcessInfo) override;
     /// [master tied components, slave tied components, slave multipliers], node-major.
     /// @throws InputError if a DoF is missing
     void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
     void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
-    /// Zeros, one per integration point of the slave face (results live on the nodes).
-    void CalculateOnIntegrationPoints(const Variable<double>& rVariable, std::vector<double>& rOutput,
-                                      const ProcessInfo& rCurrentProcessInfo) override;
-    void CalculateOnIntegrationPoints(const Variable<Array3>& rVariable, std::vector<Array3>& rOutput,
-                                      const ProcessInfo& rCurrentProcessInfo) override;
-    void CalculateOnIntegrationPoints(const Variable<Vector>& rVariable, std::vector<Vector>& rOutput,
-                                      const ProcessInfo& rCurrentProcessInfo) override;
     /// @throws InputError: unpaired, wrong node counts, a bad TYING_VARIABLE, or a node lacking the tied variable
     ///         (historical) or its DoFs, or (slave) the multiplier variable or its DoFs
     int Check(const ProcessInfo& rCurrentProcessInfo) const override;

@@ -84,37 +84,6 @@ void MORTAR_CLASS::CalculateRightHandSide(Vector& rRightHandSideVector, const Pr
 }
 
 MORTAR_TEMPLATE
-void MORTAR_CLASS::CalculateMassMatrix(Matrix& rMassMatrix, const ProcessInfo&) {
-    rMassMatrix.resize(0, 0);
-}
-
-MORTAR_TEMPLATE
-void MORTAR_CLASS::CalculateDampingMatrix(Matrix& rDampingMatrix, const ProcessInfo&) {
-    rDampingMatrix.resize(0, 0);
-}
-
-MORTAR_TEMPLATE
-void MORTAR_CLASS::CalculateOnIntegrationPoints(const Variable<double>&, std::vector<double>& rOutput,
-                                                const ProcessInfo&) {
-    const Geometry& slave = GetParentGeometry();
-    rOutput.assign(slave.IntegrationPoints(slave.DefaultIntegrationOrder()).size(), 0.0);
-}
-
-MORTAR_TEMPLATE
-void MORTAR_CLASS::CalculateOnIntegrationPoints(const Variable<Array3>&, std::vector<Array3>& rOutput,
-                                                const ProcessInfo&) {
-    const Geometry& slave = GetParentGeometry();
-    rOutput.assign(slave.IntegrationPoints(slave.DefaultIntegrationOrder()).size(), Array3::Zero());
-}
-
-MORTAR_TEMPLATE
-void MORTAR_CLASS::CalculateOnIntegrationPoints(const Variable<Vector>&, std::vector<Vector>& rOutput,
-                                                const ProcessInfo&) {
-    const Geometry& slave = GetParentGeometry();
-    rOutput.assign(slave.IntegrationPoints(slave.DefaultIntegrationOrder()).size(), Vector::Zero(TDim));
-}
-
-MORTAR_TEMPLATE
 InternalError MORTAR_CLASS::NotInBase(const char* method) const {
     return InternalError(detail::Concat("MortarContactCondition::", method, " called on condition ", Id(),
                                         ": the base class has no formulation family (this is a bug in contact_app;",

@@ -79,17 +79,6 @@ public:
     void CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) override;
     /// Double evaluation only (no derivative work).
     void CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo& rCurrentProcessInfo) override;
-    /// 0×0: no inertia.
-    void CalculateMassMatrix(Matrix& rMassMatrix, const ProcessInfo& rCurrentProcessInfo) override;
-    /// 0×0: no damping.
-    void CalculateDampingMatrix(Matrix& rDampingMatrix, const ProcessInfo& rCurrentProcessInfo) override;
-    /// Zeros, one per integration point of the slave face (results live on the nodes).
-    void CalculateOnIntegrationPoints(const Variable<double>& rVariable, std::vector<double>& rOutput,
-                                      const ProcessInfo& rCurrentProcessInfo) override;
-    void CalculateOnIntegrationPoints(const Variable<Array3>& rVariable, std::vector<Array3>& rOutput,
-                                      const ProcessInfo& rCurrentProcessInfo) override;
-    void CalculateOnIntegrationPoints(const Variable<Vector>& rVariable, std::vector<Vector>& rOutput,
-                                      const ProcessInfo& rCurrentProcessInfo) override;
     /// The equation ids of GetDofList, in its order.
     /// @param[out] rResult MatrixSize ids
     /// @param[in] rCurrentProcessInfo handed on to GetDofList

@@ -365,12 +365,6 @@ void MPC_CLASS::CalculateRightHandSide(Vector& rRightHandSideVector, const Proce
 }
 
 MPC_TEMPLATE
-void MPC_CLASS::CalculateMassMatrix(Matrix& rMassMatrix, const ProcessInfo&) { rMassMatrix.resize(0, 0); }
-
-MPC_TEMPLATE
-void MPC_CLASS::CalculateDampingMatrix(Matrix& rDampingMatrix, const ProcessInfo&) { rDampingMatrix.resize(0, 0); }
-
-MPC_TEMPLATE
 void MPC_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&) const {
     const Geometry& slave = GetParentGeometry();
     const Geometry& master = GetPairedGeometry();
@@ -426,27 +420,6 @@ void MPC_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) 
         slave[j].SetValue(NODAL_AREA, slave[j].GetValue(NODAL_AREA) + result.nodal_area[j]);
         if (slip) slave[j].FastGetSolutionStepValue(WEIGHTED_SLIP).head<TDim>() += result.weighted_slip.row(j).transpose();
     }
-}
-
-MPC_TEMPLATE
-void MPC_CLASS::CalculateOnIntegrationPoints(const Variable<double>&, std::vector<double>& rOutput,
-                                             const ProcessInfo&) {
-    const Geometry& slave = GetParentGeometry();
-    rOutput.assign(slave.IntegrationPoints(slave.DefaultIntegrationOrder()).size(), 0.0);
-}
-
-MPC_TEMPLATE
-void MPC_CLASS::CalculateOnIntegrationPoints(const Variable<Array3>&, std::vector<Array3>& rOutput,
-                                             const ProcessInfo&) {
-    const Geometry& slave = GetParentGeometry();
-    rOutput.assign(slave.IntegrationPoints(slave.DefaultIntegrationOrder()).size(), Array3::Zero());
-}
-
-MPC_TEMPLATE
-void MPC_CLASS::CalculateOnIntegrationPoints(const Variable<Vector>&, std::vector<Vector>& rOutput,
-                                             const ProcessInfo&) {
-    const Geometry& slave = GetParentGeometry();
-    rOutput.assign(slave.IntegrationPoints(slave.DefaultIntegrationOrder()).size(), Vector::Zero(TDim));
 }
 
 MPC_TEMPLATE

@@ -72,20 +72,12 @@ public:
     void CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) override;
     /// Zero (MatrixSize).
     void CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo& rCurrentProcessInfo) override;
-    void CalculateMassMatrix(Matrix& rMassMatrix, const ProcessInfo& rCurrentProcessInfo) override;
-    void CalculateDampingMatrix(Matrix& rDampingMatrix, const ProcessInfo& rCurrentProcessInfo) override;
     /// [master DISPLACEMENT_*, slave DISPLACEMENT_*]. @throws InputError if a DoF is missing
     void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
     void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
     /// Adds the pair's weighted gap to the historical WEIGHTED_GAP, D_jj to NODAL_AREA (dual only) and, if
     /// Is(SLIP), the weighted slip (previous operators) to the historical WEIGHTED_SLIP; sets ISOLATED afresh.
     void AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) override;
-    void CalculateOnIntegrationPoints(const Variable<double>& rVariable, std::vector<double>& rOutput,
-                                      const ProcessInfo& rCurrentProcessInfo) override;
-    void CalculateOnIntegrationPoints(const Variable<Array3>& rVariable, std::vector<Array3>& rOutput,
-                                      const ProcessInfo& rCurrentProcessInfo) override;
-    void CalculateOnIntegrationPoints(const Variable<Vector>& rVariable, std::vector<Vector>& rOutput,
-                                      const ProcessInfo& rCurrentProcessInfo) override;
     /// @throws InputError: unpaired, wrong node counts, a node without DISPLACEMENT (historical) or its DoFs, a
     ///         slave node without NORMAL / WEIGHTED_GAP (historical)
     int Check(const ProcessInfo& rCurrentProcessInfo) const override;

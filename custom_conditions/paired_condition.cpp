@@ -100,4 +100,29 @@ std::string PairedCondition::Info() const {
     return out.str();
 }
 
+void PairedCondition::CalculateMassMatrix(Matrix& rMassMatrix, const ProcessInfo&) { rMassMatrix.resize(0, 0); }
+
+void PairedCondition::CalculateDampingMatrix(Matrix& rDampingMatrix, const ProcessInfo&) {
+    rDampingMatrix.resize(0, 0);
+}
+
+void PairedCondition::CalculateOnIntegrationPoints(const Variable<double>&, std::vector<double>& rOutput,
+                                                   const ProcessInfo&) {
+    const Geometry& slave = GetParentGeometry();
+    rOutput.assign(slave.IntegrationPoints(slave.DefaultIntegrationOrder()).size(), 0.0);
+}
+
+void PairedCondition::CalculateOnIntegrationPoints(const Variable<Array3>&, std::vector<Array3>& rOutput,
+                                                   const ProcessInfo&) {
+    const Geometry& slave = GetParentGeometry();
+    rOutput.assign(slave.IntegrationPoints(slave.DefaultIntegrationOrder()).size(), Array3::Zero());
+}
+
+void PairedCondition::CalculateOnIntegrationPoints(const Variable<Vector>&, std::vector<Vector>& rOutput,
+                                                   const ProcessInfo&) {
+    const Geometry& slave = GetParentGeometry();
+    rOutput.assign(slave.IntegrationPoints(slave.DefaultIntegrationOrder()).size(),
+                   Vector::Zero(slave.WorkingSpaceDimension()));
+}
+
 }  // namespace contact_app

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <vector>
+
 #include "contact_app/kernel/condition.h"
 
 namespace contact_app {
@@ -35,6 +37,18 @@ public:
     void InitializeNonLinearIteration(const ProcessInfo& rCurrentProcessInfo) override;
     /// @throws InputError naming the condition id when no master geometry was paired (the .mdpa case)
     int Check(const ProcessInfo& rCurrentProcessInfo) const override;
+    /// 0×0: a pair has no inertia.
+    void CalculateMassMatrix(Matrix& rMassMatrix, const ProcessInfo& rCurrentProcessInfo) override;
+    /// 0×0: a pair has no damping.
+    void CalculateDampingMatrix(Matrix& rDampingMatrix, const ProcessInfo& rCurrentProcessInfo) override;
+    /// Zeros, one per integration point of the slave face: a pair's results live on its nodes.
+    void CalculateOnIntegrationPoints(const Variable<double>& rVariable, std::vector<double>& rOutput,
+                                      const ProcessInfo& rCurrentProcessInfo) override;
+    void CalculateOnIntegrationPoints(const Variable<Array3>& rVariable, std::vector<Array3>& rOutput,
+                                      const ProcessInfo& rCurrentProcessInfo) override;
+    /// Zero vectors of the working-space dimension, one per integration point of the slave face.
+    void CalculateOnIntegrationPoints(const Variable<Vector>& rVariable, std::vector<Vector>& rOutput,
+                                      const ProcessInfo& rCurrentProcessInfo) override;
     std::string Info() const override;
     /// Base state plus the cached master normal.
     void Save(Serializer& rSerializer) const override;
