@@ -46,7 +46,7 @@ public:
     };
     /// @param[in] direction v over the equation ids; empty: the Newton correction A(x)⁻¹ b(x)
     /// @param[in] step h, in the units of the unknowns
-    /// @throws InputError for a model with active multipoint constraints, a wrong size or h ≤ 0
+    /// @throws InputError for a model with multipoint constraints, a direction of the wrong size or h ≤ 0
     TangentCheck CheckTangentAlong(SystemVectorType direction, double step);
 
 protected:

@@ -10,23 +10,30 @@
 namespace contact_app {
 namespace {
 
-/// ε = B u on the initial configuration; the law gets ε and the "equivalent F" I + ε.
+/// ε = B u and the "equivalent F" I + ε (3×3 in axisymmetry) the small-displacement laws read; B from the DN_DX
+/// (and hoop row) already set.
 template <int TDim, int TNumNodes, int TStrainSize>
-void SmallDisplacementKinematics(const BaseSolidElement<TDim, TNumNodes, TStrainSize>& rElement, std::size_t point,
-                                 SolidKinematics<TDim, TNumNodes, TStrainSize>& rKinematics) {
-    using NodalMatrix = typename BaseSolidElement<TDim, TNumNodes, TStrainSize>::NodalMatrix;
-    const auto& reference = rElement.GetReferencePoint(point);
-    rKinematics.N = reference.N;
-    rKinematics.DN_DX = reference.DN_DX0;
+void SmallStrain(const BaseSolidElement<TDim, TNumNodes, TStrainSize>& rElement,
+                 SolidKinematics<TDim, TNumNodes, TStrainSize>& rKinematics) {
     rKinematics.F.setIdentity();
     FillStrainDisplacementMatrix(rKinematics);
-    const NodalMatrix u = rElement.NodalDisplacements(0);
+    const auto u = rElement.NodalDisplacements(0);
     rKinematics.strain.setZero();
     for (int i = 0; i < TNumNodes; ++i)
         rKinematics.strain.noalias() += rKinematics.B.template middleCols<TDim>(i * TDim) * u.row(i).transpose();
     constexpr int f_size = SolidKinematics<TDim, TNumNodes, TStrainSize>::kFSize;
     rKinematics.F = EquivalentDeformationGradient<f_size>(rKinematics.strain);
     rKinematics.detF = rKinematics.F.determinant();
+}
+
+/// ε = B u on the initial configuration; the law gets ε and the "equivalent F" I + ε.
+template <int TDim, int TNumNodes, int TStrainSize>
+void SmallDisplacementKinematics(const BaseSolidElement<TDim, TNumNodes, TStrainSize>& rElement, std::size_t point,
+                                 SolidKinematics<TDim, TNumNodes, TStrainSize>& rKinematics) {
+    const auto& reference = rElement.GetReferencePoint(point);
+    rKinematics.N = reference.N;
+    rKinematics.DN_DX = reference.DN_DX0;
+    SmallStrain(rElement, rKinematics);
     rKinematics.weight = reference.weight * reference.detJ0 * rElement.ThicknessFactor();
     rKinematics.body_weight = rKinematics.weight;
 }
@@ -61,16 +68,9 @@ void AxisymSmallDisplacementKinematics(const BaseSolidElement<TDim, TNumNodes, T
     rKinematics.N = reference.N;
     rKinematics.DN_DX = reference.DN_DX0;
     rKinematics.hoop = reference.N / radius;
-    rKinematics.F.setIdentity();
-    FillStrainDisplacementMatrix(rKinematics);
-    const NodalMatrix u = rElement.NodalDisplacements(0);
-    rKinematics.strain.setZero();
-    for (int i = 0; i < TNumNodes; ++i)
-        rKinematics.strain.noalias() += rKinematics.B.template middleCols<2>(i * 2) * u.row(i).transpose();
     // docs/theory/structural.md §8 D3: Kratos writes a 3×3 pattern into a 2×2 equivalent F; the full 3×3 I + ε is
     // passed here.
-    rKinematics.F = EquivalentDeformationGradient<3>(rKinematics.strain);
-    rKinematics.detF = rKinematics.F.determinant();
+    SmallStrain(rElement, rKinematics);
     rKinematics.weight = 2.0 * M_PI * radius * reference.weight * reference.detJ0;
     rKinematics.body_weight = rKinematics.weight;
 }
@@ -84,8 +84,7 @@ void AxisymTotalLagrangianKinematics(const BaseSolidElement<TDim, TNumNodes, TSt
     const NodalMatrix X0 = rElement.NodalCoordinates(Geometry::Configuration::Initial);
     const NodalMatrix x = rElement.NodalCoordinates(Geometry::Configuration::Current);
     // docs/theory/structural.md §8 D3: Kratos takes the "initial" radius from the previous step and the weight from the
-    // current
-    // radius; the total-Lagrangian form uses the initial radius R for F_θθ = r/R, the hoop row and 2πR dA0.
+    // current radius; the total-Lagrangian form uses the initial radius R for F_θθ = r/R, the hoop row and 2πR dA0.
     const double radius0 = reference.N.dot(X0.col(0));
     const double radius = reference.N.dot(x.col(0));
     rKinematics.N = reference.N;
