@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "custom_conditions/mesh_tying_mortar_condition.h"
+#include "tests/cpp/error_test_utilities.h"
 #include "tying_test_utilities.h"
 
 namespace contact_app::testing {
@@ -249,16 +250,6 @@ TEST(MeshTyingMortarCondition, OverlapRatioBelowTheDimensionlessThresholdDeactiv
             EXPECT_EQ(deactivated, below)
                 << "unit " << unit << " fraction " << fraction;
         }
-}
-
-/// Runs Check() and returns the InputError message ("" if it passed).
-std::string CheckMessage(const Condition& condition) {
-    try {
-        condition.Check(ProcessInfo());
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
 }
 
 std::shared_ptr<PairedCondition> MatchingTriangles(TyingPairModel& model, const std::string& tying_variable = "") {

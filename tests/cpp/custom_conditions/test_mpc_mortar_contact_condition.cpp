@@ -11,6 +11,7 @@
 
 #include "contact_app/kernel/serializer.h"
 #include "custom_conditions/mpc_mortar_contact_condition.h"
+#include "tests/cpp/error_test_utilities.h"
 #include "tying_test_utilities.h"
 
 namespace contact_app::testing {
@@ -558,15 +559,6 @@ TEST(MPCMortarContactCondition, SaveLoadRestoresThePreviousMortarOperators) {
     EXPECT_TRUE(target.PreviousMortarOperatorsInitialized());
     EXPECT_EQ(target.GetPreviousMortarOperators().D, source.GetPreviousMortarOperators().D);
     EXPECT_EQ(target.GetPreviousMortarOperators().M, source.GetPreviousMortarOperators().M);
-}
-
-std::string CheckMessage(const Condition& condition) {
-    try {
-        condition.Check(ProcessInfo());
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
 }
 
 TEST(MPCMortarContactCondition, CheckReportsEveryMissingPiece) {

@@ -3,6 +3,7 @@
 #include "contact_condition_test_utilities.h"
 
 #include "contact_app/kernel/exceptions.h"
+#include "tests/cpp/error_test_utilities.h"
 
 namespace contact_app::testing {
 namespace {
@@ -25,15 +26,8 @@ TEST_P(RegisteredPairNames, CheckWithoutMasterGeometryNamesTheCondition) {
     ASSERT_TRUE(condition);
     EXPECT_FALSE(condition->HasPairedGeometry());
     EXPECT_EQ(condition->GetParentGeometry().size(), static_cast<std::size_t>(row.num_slave));
-    try {
-        condition->Check(ProcessInfo{});
-        FAIL() << "Check() accepted an unpaired condition";
-    } catch (const InputError& error) {
-        const std::string message = error.what();
-        EXPECT_NE(message.find("condition 7"), std::string::npos) << message;
-        EXPECT_NE(message.find("no paired master geometry"), std::string::npos) << message;
-        EXPECT_NE(message.find("fix:"), std::string::npos) << message;
-    }
+    ExpectError<InputError>([&] { condition->Check(ProcessInfo{}); },
+                            {"condition 7", "no paired master geometry", "fix:"});
 }
 
 TEST(PairedCondition, RolesCreateOverloadsAndPairedNormal) {

@@ -19,9 +19,12 @@
 #include "custom_processes/mpc_contact_search_process.h"
 #include "custom_strategies/contact_master_slave_constraint.h"
 #include "custom_utilities/index_map.h"
+#include "tests/cpp/error_test_utilities.h"
 
 namespace contact_app {
 namespace {
+
+using testing::ExpectError;
 
 using PairSet = std::set<std::pair<IndexType, IndexType>>;  // (slave face id, master face id)
 
@@ -296,16 +299,10 @@ TEST(ContactSearch, InitialPenetrationBeyondReachIsAnInputError) {
     settings.condition_name = "ALMFrictionlessMortarContact";
     ContactSearchProcess search(*m.main, settings, m.properties);
     search.ExecuteInitialize();
-    try {
-        search.ExecuteInitializeSolutionStep();
-        FAIL() << "no error for slave nodes 0.5 inside the master body";
-    } catch (const InputError& error) {
-        const std::string what = error.what();
-        EXPECT_NE(what.find("11 slave node(s)"), std::string::npos) << what;
-        EXPECT_NE(what.find("node 1 at depth 0.5"), std::string::npos) << what;
-        EXPECT_NE(what.find("search_factor = 3.5"), std::string::npos) << what;
-        EXPECT_NE(what.find("raise search_factor to at least 10.5"), std::string::npos) << what;
-    }
+    // Slave nodes 0.5 inside the master body, beyond the search's reach.
+    ExpectError<InputError>([&] { search.ExecuteInitializeSolutionStep(); },
+                            {"11 slave node(s)", "node 1 at depth 0.5", "search_factor = 3.5",
+                             "raise search_factor to at least 10.5"});
     // The suggested factor makes the same configuration a paired, active one.
     SearchModel again;
     again.Line(Array3(1, 0, 0), Array3(0, 0, 0), 10, true, 0.1);
@@ -723,15 +720,8 @@ TEST(ContactSearch, SettingsSpellingsAndErrors) {
     EXPECT_EQ(ParseCheckGap("check_mapping"), CheckGap::MappingCheck);
     EXPECT_EQ(ParseCheckGap("DirectCheck"), CheckGap::DirectCheck);
     EXPECT_EQ(SearchTreeTypeName(SearchTreeType::InBox), "in_box");
-    try {
-        ParseSearchTreeType("in_radus");
-        FAIL() << "no error for an unknown type_search";
-    } catch (const InputError& error) {
-        const std::string what = error.what();
-        EXPECT_NE(what.find("in_radus"), std::string::npos);
-        EXPECT_NE(what.find("\"in_box_with_obb\""), std::string::npos);
-        EXPECT_NE(what.find("did you mean \"in_radius\""), std::string::npos);
-    }
+    ExpectError<InputError>([] { ParseSearchTreeType("in_radus"); },
+                            {"in_radus", "\"in_box_with_obb\"", "did you mean \"in_radius\""});
     EXPECT_THROW(ParseSearchTreeType("KDOP"), InputError);
     EXPECT_THROW(ParseCheckGap("mapping"), InputError);
     ContactSearchSettings settings;
@@ -759,12 +749,8 @@ TEST(ContactSearch, SettingsSpellingsAndErrors) {
     wrong.condition_name = "ALMFrictionlesMortarContact";
     ContactSearchProcess search(*m.main, wrong);
     search.ExecuteInitialize();
-    try {
-        search.ExecuteInitializeSolutionStep();
-        FAIL() << "no error for an unknown condition name";
-    } catch (const InputError& error) {
-        EXPECT_NE(std::string(error.what()).find("ALMFrictionlesMortarContactCondition2D2N"), std::string::npos);
-    }
+    ExpectError<InputError>([&] { search.ExecuteInitializeSolutionStep(); },
+                            {"ALMFrictionlesMortarContactCondition2D2N"});
 }
 
 }  // namespace

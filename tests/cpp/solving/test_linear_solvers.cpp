@@ -7,11 +7,13 @@
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/solving/linear_solvers/direct_solver.h"
 #include "contact_app/solving/linear_solvers/linear_solver_factory.h"
+#include "tests/cpp/error_test_utilities.h"
 #include "tests/cpp/solving/linear_solver_test_utilities.h"
 
 namespace contact_app {
 namespace {
 
+using testing::ExpectError;
 using testing::Laplacian;
 using testing::SaddlePoint;
 
@@ -42,12 +44,7 @@ TEST(LinearSolvers, CholeskyRefusesAnIndefiniteSystemWithAClearError) {
     SparseMatrixType matrix = SaddlePoint(10);
     SystemVectorType b = SystemVectorType::Ones(11), x;
     DirectSolver solver(DirectSolverKind::Cholmod);
-    try {
-        solver.Solve(matrix, x, b);
-        FAIL();
-    } catch (const ConvergenceError& error) {
-        EXPECT_NE(std::string(error.what()).find("not positive definite"), std::string::npos);
-    }
+    ExpectError<ConvergenceError>([&] { solver.Solve(matrix, x, b); }, {"not positive definite"});
 }
 
 TEST(LinearSolvers, SingularMatrixIsAConvergenceError) {
@@ -103,13 +100,8 @@ TEST(LinearSolvers, AutoOrderingIsAmdForSmallAndMetisForLargeSystems) {
 TEST(LinearSolverFactory, OrderingIsValidatedWithTheKeyNamed) {
     LinearSolverSettings settings;
     settings.ordering = "nested_dissection";
-    try {
-        CreateLinearSolver(settings);
-        FAIL();
-    } catch (const InputError& error) {
-        EXPECT_NE(std::string(error.what()).find("unknown linear_solver_settings.ordering \"nested_dissection\""),
-                  std::string::npos);
-    }
+    ExpectError<InputError>([&] { CreateLinearSolver(settings); },
+                            {"unknown linear_solver_settings.ordering \"nested_dissection\""});
     settings.solver_type = "klu";
     settings.ordering = "metis";
     EXPECT_THROW(CreateLinearSolver(settings), InputError);
@@ -127,12 +119,8 @@ TEST(LinearSolverFactory, KratosNamesMapAndUnknownNamesSuggest) {
     EXPECT_EQ(ResolveLinearSolverName("amgcl"), "petsc");
     EXPECT_EQ(ResolveLinearSolverName("gmres"), "petsc");
     EXPECT_EQ(ResolveLinearSolverName(""), "direct");
-    try {
-        ResolveLinearSolverName("skyline_lu_factorisation");
-        FAIL();
-    } catch (const InputError& error) {
-        EXPECT_NE(std::string(error.what()).find("did you mean \"skyline_lu_factorization\""), std::string::npos);
-    }
+    ExpectError<InputError>([] { ResolveLinearSolverName("skyline_lu_factorisation"); },
+                            {"did you mean \"skyline_lu_factorization\""});
 }
 
 }  // namespace

@@ -7,11 +7,13 @@
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/solving/linear_solvers/linear_solver_factory.h"
 #include "contact_app/solving/linear_solvers/mumps_solver.h"
+#include "tests/cpp/error_test_utilities.h"
 #include "tests/cpp/solving/linear_solver_test_utilities.h"
 
 namespace contact_app {
 namespace {
 
+using testing::ExpectError;
 using testing::Laplacian;
 using testing::SaddlePoint;
 
@@ -83,15 +85,9 @@ TEST(MumpsSolver, SingularMatrixIsAConvergenceErrorNamingTheCode) {
     matrix.coeffRef(5, 5) = 1.0;
     SystemVectorType b = SystemVectorType::Ones(6), x;
     MumpsSolver solver;
-    try {
-        solver.Solve(matrix, x, b);
-        FAIL();
-    } catch (const ConvergenceError& error) {
-        const std::string message = error.what();
-        EXPECT_NE(message.find("mumps: the factorisation of the 6x6 system failed"), std::string::npos) << message;
-        EXPECT_NE(message.find("singular matrix (MUMPS error -10; null pivots: 1)"), std::string::npos) << message;
-        EXPECT_NE(message.find("fix:"), std::string::npos) << message;
-    }
+    ExpectError<ConvergenceError>([&] { solver.Solve(matrix, x, b); },
+                                  {"mumps: the factorisation of the 6x6 system failed",
+                                   "singular matrix (MUMPS error -10; null pivots: 1)", "fix:"});
     EXPECT_LT(RelativeError(solver, Laplacian(6)), 1e-12);  // usable after the failure
 }
 

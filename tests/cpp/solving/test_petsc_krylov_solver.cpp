@@ -12,9 +12,12 @@
 #include "contact_app/kernel/exceptions.h"
 #include "contact_app/solving/linear_solvers/linear_solver_factory.h"
 #include "contact_app/solving/linear_solvers/petsc_krylov_solver.h"
+#include "tests/cpp/error_test_utilities.h"
 
 namespace contact_app {
 namespace {
+
+using testing::ExpectError;
 
 #define SKIP_WITHOUT_PETSC()                                                   \
     do {                                                                       \
@@ -204,14 +207,8 @@ TEST(PetscKrylovSolver, UnknownSettingsNameTheKey) {
     // No PETSc needed: the settings are checked before the plugin is loaded.
     KrylovSettings settings;
     settings.smoother_type = "gauss_seidl";
-    try {
-        PetscOptionsFromSettings(settings);
-        FAIL();
-    } catch (const InputError& error) {
-        const std::string text = error.what();
-        EXPECT_NE(text.find("linear_solver_settings.smoother_type \"gauss_seidl\""), std::string::npos) << text;
-        EXPECT_NE(text.find("did you mean \"gauss_seidel\""), std::string::npos) << text;
-    }
+    ExpectError<InputError>([&] { PetscOptionsFromSettings(settings); },
+                            {"linear_solver_settings.smoother_type \"gauss_seidl\"", "did you mean \"gauss_seidel\""});
     settings = {};
     settings.krylov_type = "idrs";
     EXPECT_THROW(PetscOptionsFromSettings(settings), InputError);
@@ -242,16 +239,9 @@ TEST(PetscKrylovSolver, NotConvergedSaysWhatToChange) {
     settings.tolerance = 1e-12;
     settings.max_iteration = 2;
     auto solver = CreateLinearSolver(settings);
-    try {
-        solver->Solve(system.matrix, x, b);
-        FAIL();
-    } catch (const ConvergenceError& error) {
-        const std::string text = error.what();
-        EXPECT_NE(text.find("no convergence"), std::string::npos) << text;
-        EXPECT_NE(text.find("after 2 iterations"), std::string::npos) << text;
-        EXPECT_NE(text.find("relative residual"), std::string::npos) << text;
-        EXPECT_NE(text.find("raise linear_solver_settings.max_iteration (now 2)"), std::string::npos) << text;
-    }
+    ExpectError<ConvergenceError>([&] { solver->Solve(system.matrix, x, b); },
+                                  {"no convergence", "after 2 iterations", "relative residual",
+                                   "raise linear_solver_settings.max_iteration (now 2)"});
 }
 
 }  // namespace

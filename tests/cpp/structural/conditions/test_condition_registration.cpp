@@ -8,6 +8,7 @@
 
 #include "contact_app/kernel/registry.h"
 #include "load_condition_test_utilities.h"
+#include "tests/cpp/error_test_utilities.h"
 
 namespace contact_app::testing {
 namespace {
@@ -68,14 +69,6 @@ protected:
             node->FastGetSolutionStepValue(POSITIVE_FACE_PRESSURE) = 0.1;
         }
         return condition;
-    }
-    std::string CheckMessage(const Condition& condition) {
-        try {
-            condition.Check(ProcessInfo());
-        } catch (const InputError& error) {
-            return error.what();
-        }
-        return "";
     }
     const LoadConditionTraits* traits = nullptr;
 };

@@ -6,7 +6,6 @@
 
 #include <cstddef>
 #include <functional>
-#include <initializer_list>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -16,6 +15,7 @@
 #include "contact_app/kernel/constitutive_law.h"
 #include "contact_app/kernel/model.h"
 #include "contact_app/kernel/variables.h"
+#include "tests/cpp/error_test_utilities.h"
 
 namespace contact_app::testing {
 
@@ -120,19 +120,6 @@ PatchMesh MakePatchMesh(const ElementInfo& element);
 /// Newton solve of the free DoFs of @p model's elements with the boundary nodes of @p mesh held at
 /// @p field(X); assembles the element LHS/RHS into dense matrices. Returns the number of iterations.
 int SolvePatch(SolidTestModel& model, const PatchMesh& mesh, const std::function<Array3(const Array3&)>& field);
-
-/// Runs @p action and expects a @p TError whose message contains every fragment.
-template <class TError, class TAction>
-void ExpectError(TAction&& action, std::initializer_list<std::string> fragments) {
-    try {
-        action();
-        ADD_FAILURE() << "expected an exception";
-    } catch (const TError& error) {
-        const std::string message = error.what();
-        for (const std::string& fragment : fragments)
-            EXPECT_NE(message.find(fragment), std::string::npos) << "missing \"" << fragment << "\" in: " << message;
-    }
-}
 
 /// Law response in @p measure at the kinematics @p F (kFSize square) and @p strain (used when @p provided).
 Vector LawStress(const std::string& law, const Properties& properties, const Matrix& F, const Vector& strain,
