@@ -17,6 +17,7 @@
 #include "contact_app/kernel/model.h"
 #include "contact_app/kernel/registry.h"
 #include "custom_conditions/contact_condition_registration.h"
+#include "custom_conditions/mortar_contact_condition.h"
 #include "custom_conditions/paired_condition.h"
 #include "custom_utilities/mortar_normals.h"
 
@@ -36,6 +37,35 @@ inline const ContactConditionName& DecodedName(const std::string& name) {
 
 inline std::string FaceGeometryName(int dim, int num_nodes) {
     return dim == 2 ? "Line2D2" : (num_nodes == 3 ? "Triangle3D3" : "Quadrilateral3D4");
+}
+
+/// @p f applied to the mortar base of whichever registered contact instantiation @p c is (−1 for another condition).
+template <class TFunction>
+int WithMortarBase(const Condition* c, TFunction&& f) {
+#define CONTACT_APP_TRY(D, NS, NM, F)                                                                 \
+    if (auto p = dynamic_cast<const MortarContactCondition<D, NS, FrictionalCase::F, false, NM>*>(c)) \
+        return f(*p);                                                                                 \
+    if (auto p = dynamic_cast<const MortarContactCondition<D, NS, FrictionalCase::F, true, NM>*>(c))  \
+        return f(*p);
+#define CONTACT_APP_TRY_PAIRS(F) \
+    CONTACT_APP_TRY(2, 2, 2, F)  \
+    CONTACT_APP_TRY(3, 3, 3, F)  \
+    CONTACT_APP_TRY(3, 4, 4, F)  \
+    CONTACT_APP_TRY(3, 3, 4, F)  \
+    CONTACT_APP_TRY(3, 4, 3, F)
+    CONTACT_APP_TRY_PAIRS(FRICTIONLESS)
+    CONTACT_APP_TRY_PAIRS(FRICTIONLESS_COMPONENTS)
+    CONTACT_APP_TRY_PAIRS(FRICTIONLESS_PENALTY)
+    CONTACT_APP_TRY_PAIRS(FRICTIONAL)
+    CONTACT_APP_TRY_PAIRS(FRICTIONAL_PENALTY)
+#undef CONTACT_APP_TRY_PAIRS
+#undef CONTACT_APP_TRY
+    return -1;
+}
+
+/// GetActiveInactiveValue (Σ 2^i over the ACTIVE slave nodes) of a registered contact pair.
+inline int ActiveInactiveValue(const Condition* c) {
+    return WithMortarBase(c, [](const auto& p) { return p.GetActiveInactiveValue(); });
 }
 
 /// Random slave and master face coordinates of the pair kind TPair (a positive radius in axisymmetry).
@@ -95,13 +125,15 @@ inline void FaceNormals(const Geometry& face, int dim, Eigen::MatrixXd& nodal, E
     }
 }
 
-/// Sets the slave nodal NORMAL (historical) and the pair NORMAL as the search/criteria would for one face.
+/// Sets the slave nodal NORMAL (historical, where the node has it) and the pair NORMAL as the search/criteria would
+/// for one face from its current coordinates.
 inline void UpdateNormals(PairedCondition& pair, int dim) {
     Eigen::MatrixXd nodal;
     Eigen::VectorXd center;
     FaceNormals(pair.GetParentGeometry(), dim, nodal, center);
     auto& slave = const_cast<Geometry&>(pair.GetParentGeometry());
     for (std::size_t i = 0; i < slave.size(); ++i) {
+        if (!slave[i].SolutionStepsDataHas(NORMAL)) continue;  // a tying model may leave NORMAL out
         Array3 n = Array3::Zero();
         n.head(dim) = nodal.row(i).transpose();
         slave[i].FastGetSolutionStepValue(NORMAL) = n;
@@ -109,6 +141,43 @@ inline void UpdateNormals(PairedCondition& pair, int dim) {
     Array3 c = Array3::Zero();
     c.head(dim) = center;
     pair.SetValue(NORMAL, c);
+}
+
+/// The registered pair condition @p name on new nodes of @p model, added by its AddNode (the DoFs are the
+/// model's): slave rows of @p slave (ids 1..n_s), master rows of @p master (ids n_s+1..).
+template <class TModel>
+std::shared_ptr<PairedCondition> MakeRegisteredPair(TModel& model, const std::string& name,
+                                                    const Eigen::MatrixXd& slave, const Eigen::MatrixXd& master,
+                                                    IndexType id) {
+    const auto& row = DecodedName(name);
+    Geometry::PointsArrayType s, m;
+    for (int i = 0; i < slave.rows(); ++i) {
+        model.AddNode(i + 1, slave.row(i).transpose());
+        s.push_back(model.part->pGetNode(i + 1));
+    }
+    for (int i = 0; i < master.rows(); ++i) {
+        model.AddNode(slave.rows() + i + 1, master.row(i).transpose());
+        m.push_back(model.part->pGetNode(slave.rows() + i + 1));
+    }
+    const auto& prototype = dynamic_cast<const PairedCondition&>(Registry<Condition>::Instance().Get(name));
+    return std::dynamic_pointer_cast<PairedCondition>(
+        prototype.Create(id, CreateGeometry(FaceGeometryName(row.dim, row.num_slave), s), model.properties,
+                         CreateGeometry(FaceGeometryName(row.dim, row.num_master), m)));
+}
+
+/// Expects what PairedCondition answers for every pair kind: no mass, no damping (empty matrices) and a zero
+/// WEIGHTED_GAP at each integration point. Returns the number of integration points.
+inline std::size_t ExpectNoMassNoDampingZeroGap(PairedCondition& pair, const ProcessInfo& info) {
+    Matrix mass, damping;
+    pair.CalculateMassMatrix(mass, info);
+    pair.CalculateDampingMatrix(damping, info);
+    EXPECT_EQ(mass.size(), 0);
+    EXPECT_EQ(damping.size(), 0);
+    std::vector<double> gap;
+    pair.CalculateOnIntegrationPoints(WEIGHTED_GAP, gap, info);
+    EXPECT_FALSE(gap.empty());
+    for (double v : gap) EXPECT_EQ(v, 0.0);
+    return gap.size();
 }
 
 /// A model part with the historical variables and DoFs of the ALM frictionless (scalar and vector multiplier) solvers.
@@ -139,25 +208,19 @@ public:
         return *node;
     }
 
-    /// The pair condition @p name on new nodes: slave rows of @p slave (ids 1..n_s), master rows of @p master
-    /// (ids n_s+1..); historical NORMAL of the slave nodes and condition NORMAL from the slave face.
+    /// The pair condition @p name on new nodes (MakeRegisteredPair); the normals are left to UpdateNormals.
     std::shared_ptr<PairedCondition> MakePair(const std::string& name, const Eigen::MatrixXd& slave,
                                               const Eigen::MatrixXd& master, IndexType id = 1) {
-        const auto& row = DecodedName(name);
-        Geometry::PointsArrayType s, m;
-        for (int i = 0; i < slave.rows(); ++i) {
-            AddNode(i + 1, slave.row(i).transpose());
-            s.push_back(part->pGetNode(i + 1));
-        }
-        for (int i = 0; i < master.rows(); ++i) {
-            AddNode(slave.rows() + i + 1, master.row(i).transpose());
-            m.push_back(part->pGetNode(slave.rows() + i + 1));
-        }
-        const auto& prototype = dynamic_cast<const PairedCondition&>(Registry<Condition>::Instance().Get(name));
-        auto condition = std::dynamic_pointer_cast<PairedCondition>(
-            prototype.Create(id, CreateGeometry(FaceGeometryName(row.dim, row.num_slave), s), properties,
-                             CreateGeometry(FaceGeometryName(row.dim, row.num_master), m)));
-        return condition;
+        return MakeRegisteredPair(*this, name, slave, master, id);
+    }
+
+    /// MakePair, with THICKNESS @p thickness on the properties and the normals of the slave face (UpdateNormals).
+    std::shared_ptr<PairedCondition> MakeNormalPair(const std::string& name, const Eigen::MatrixXd& slave,
+                                                    const Eigen::MatrixXd& master, double thickness) {
+        auto pair = MakePair(name, slave, master);
+        properties->SetValue(THICKNESS, thickness);
+        UpdateNormals(*pair, DecodedName(name).dim);
+        return pair;
     }
 
     Model model;

@@ -159,31 +159,6 @@ std::string Suffix(const std::string& name) {
     return name.substr(name.find("Condition") + 9);
 }
 
-/// @p f applied to the mortar base of a frictional instantiation (−1 for another condition).
-template <class TFunction>
-int WithMortarBase(const Condition* c, TFunction&& f) {
-#define CONTACT_APP_TRY(D, NS, NM, F)                                                                 \
-    if (auto p = dynamic_cast<const MortarContactCondition<D, NS, FrictionalCase::F, false, NM>*>(c)) \
-        return f(*p);                                                                                 \
-    if (auto p = dynamic_cast<const MortarContactCondition<D, NS, FrictionalCase::F, true, NM>*>(c))  \
-        return f(*p);
-#define CONTACT_APP_TRY_PAIRS(F) \
-    CONTACT_APP_TRY(2, 2, 2, F)  \
-    CONTACT_APP_TRY(3, 3, 3, F)  \
-    CONTACT_APP_TRY(3, 4, 4, F)  \
-    CONTACT_APP_TRY(3, 3, 4, F)  \
-    CONTACT_APP_TRY(3, 4, 3, F)
-    CONTACT_APP_TRY_PAIRS(FRICTIONAL)
-    CONTACT_APP_TRY_PAIRS(FRICTIONAL_PENALTY)
-#undef CONTACT_APP_TRY_PAIRS
-#undef CONTACT_APP_TRY
-    return -1;
-}
-
-int ActiveInactiveValue(const Condition* c) {
-    return WithMortarBase(c, [](const auto& p) { return p.GetActiveInactiveValue(); });
-}
-
 bool HasValidNodalShare(const Condition& c) {
     return WithMortarBase(&c, [](const auto& p) { return p.NodalShare().valid ? 1 : 0; }) == 1;
 }
@@ -590,10 +565,7 @@ std::shared_ptr<PairedCondition> FlatPair(ContactPairModel& model, const std::st
         s << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
         m << 0, 0, g, 0, 1, g, 1, 1, g, 1, 0, g;
     }
-    auto pair = model.MakePair(name, s, m);
-    model.properties->SetValue(THICKNESS, 1.0);
-    UpdateNormals(*pair, row.dim);
-    return pair;
+    return model.MakeNormalPair(name, s, m, 1.0);
 }
 
 /// The frictionless counterpart: same method, scalar multiplier for ALM.

@@ -71,27 +71,6 @@ void Perturb(const LocalDof& dof, double h) {
     }
 }
 
-/// GetActiveInactiveValue through the mortar base of whichever registered instantiation @p c is.
-int ActiveInactiveValue(const Condition* c) {
-#define CONTACT_APP_TRY(D, NS, NM, F)                                                                 \
-    if (auto p = dynamic_cast<const MortarContactCondition<D, NS, FrictionalCase::F, false, NM>*>(c)) \
-        return p->GetActiveInactiveValue();                                                           \
-    if (auto p = dynamic_cast<const MortarContactCondition<D, NS, FrictionalCase::F, true, NM>*>(c))  \
-        return p->GetActiveInactiveValue();
-#define CONTACT_APP_TRY_PAIRS(F) \
-    CONTACT_APP_TRY(2, 2, 2, F)  \
-    CONTACT_APP_TRY(3, 3, 3, F)  \
-    CONTACT_APP_TRY(3, 4, 4, F)  \
-    CONTACT_APP_TRY(3, 3, 4, F)  \
-    CONTACT_APP_TRY(3, 4, 3, F)
-    CONTACT_APP_TRY_PAIRS(FRICTIONLESS)
-    CONTACT_APP_TRY_PAIRS(FRICTIONLESS_COMPONENTS)
-    CONTACT_APP_TRY_PAIRS(FRICTIONLESS_PENALTY)
-#undef CONTACT_APP_TRY_PAIRS
-#undef CONTACT_APP_TRY
-    return -1;
-}
-
 class FrictionlessMortarNames : public ::testing::TestWithParam<std::string> {};
 
 /// MatrixSize per family and pair (docs/registered_conditions.md §2).
@@ -108,9 +87,7 @@ TEST_P(FrictionlessMortarNames, LocalSystemSizesAndDofOrderMatchTheSpec) {
     std::mt19937 rng(7);
     Eigen::MatrixXd s, m;
     RandomPairCoordinates(row, rng, s, m);
-    auto pair = model.MakePair(GetParam(), s, m);
-    model.properties->SetValue(THICKNESS, 1.5);
-    UpdateNormals(*pair, row.dim);
+    auto pair = model.MakeNormalPair(GetParam(), s, m, 1.5);
     ProcessInfo info;
     info.SetValue(SCALE_FACTOR, 1.0);
     for (std::size_t j = 0; j < pair->GetParentGeometry().size(); ++j)
@@ -133,15 +110,7 @@ TEST_P(FrictionlessMortarNames, LocalSystemSizesAndDofOrderMatchTheSpec) {
         EXPECT_EQ(dofs[q]->Id(), expected[q].node->Id()) << q;
         EXPECT_EQ(&dofs[q]->GetVariable(), static_cast<const VariableData*>(&DofVariable(expected[q]))) << q;
     }
-    Matrix mass, damping;
-    pair->CalculateMassMatrix(mass, info);
-    pair->CalculateDampingMatrix(damping, info);
-    EXPECT_EQ(mass.size(), 0);
-    EXPECT_EQ(damping.size(), 0);
-    std::vector<double> gp;
-    pair->CalculateOnIntegrationPoints(WEIGHTED_GAP, gp, info);
-    EXPECT_FALSE(gp.empty());
-    for (double v : gp) EXPECT_EQ(v, 0.0);
+    ExpectNoMassNoDampingZeroGap(*pair, info);
     // Active/inactive encoding: Σ 2^i over ACTIVE slave nodes.
     auto& slave = const_cast<Geometry&>(pair->GetParentGeometry());
     int expected_value = 0;
@@ -161,10 +130,8 @@ TEST_P(FrictionlessMortarNames, TangentIsTheCentralDifferenceOfMinusRhs) {
         std::mt19937 rng(100 + state);
         Eigen::MatrixXd s, m;
         RandomPairCoordinates(row, rng, s, m);
-        auto pair = model.MakePair(GetParam(), s, m);
+        auto pair = model.MakeNormalPair(GetParam(), s, m, 1.5);
         model.properties->SetValue(INTEGRATION_ORDER_CONTACT, 3);
-        model.properties->SetValue(THICKNESS, 1.5);
-        UpdateNormals(*pair, row.dim);
         std::uniform_real_distribution<double> u(0.0, 1.0);
         ProcessInfo info;
         info.SetValue(SCALE_FACTOR, 1.5);
@@ -273,9 +240,7 @@ TEST_P(MatchingPairNames, MatchingFlatPairUnderUniformGap) {
     Eigen::MatrixXd s, m;
     FlatMatchingPair(row, g, s, m);
     ContactPairModel model;
-    auto pair = model.MakePair(GetParam(), s, m);
-    model.properties->SetValue(THICKNESS, 1.0);
-    UpdateNormals(*pair, row.dim);
+    auto pair = model.MakeNormalPair(GetParam(), s, m, 1.0);
     ProcessInfo info;
     info.SetValue(SCALE_FACTOR, k);
     auto& slave = const_cast<Geometry&>(pair->GetParentGeometry());
@@ -333,9 +298,7 @@ TEST_P(MatchingPairNames, PairIsolatedAtAnEarlierPassCountsOnceItOverlaps) {
     FlatMatchingPair(row, g, s, m);
     m.col(0).array() += shift;
     ContactPairModel model;
-    auto pair = model.MakePair(GetParam(), s, m);
-    model.properties->SetValue(THICKNESS, 1.0);
-    UpdateNormals(*pair, row.dim);
+    auto pair = model.MakeNormalPair(GetParam(), s, m, 1.0);
     ProcessInfo info;
     info.SetValue(SCALE_FACTOR, k);
     auto& slave = const_cast<Geometry&>(pair->GetParentGeometry());
@@ -400,9 +363,7 @@ TEST_P(PenaltyFrictionlessNames, InactiveNodesContributeNothingAndActiveOnesNeed
     std::mt19937 rng(11);
     Eigen::MatrixXd s, m;
     RandomPairCoordinates(row, rng, s, m);
-    auto pair = model.MakePair(GetParam(), s, m);
-    model.properties->SetValue(THICKNESS, 1.5);
-    UpdateNormals(*pair, row.dim);
+    auto pair = model.MakeNormalPair(GetParam(), s, m, 1.5);
     ProcessInfo info;  // no SCALE_FACTOR: the penalty family does not read it
     auto& slave = const_cast<Geometry&>(pair->GetParentGeometry());
     for (std::size_t j = 0; j < slave.size(); ++j) slave[j].Set(ACTIVE, false);  // no INITIAL_PENALTY either
@@ -440,9 +401,7 @@ TEST_P(ALMInactiveNames, InactiveNodesReturnTheMultipliersToZero) {
     std::uniform_real_distribution<double> u(0.0, 1.0);
     Eigen::MatrixXd s, m;
     RandomPairCoordinates(row, rng, s, m);
-    auto pair = model.MakePair(GetParam(), s, m);
-    model.properties->SetValue(THICKNESS, 1.5);
-    UpdateNormals(*pair, row.dim);
+    auto pair = model.MakeNormalPair(GetParam(), s, m, 1.5);
     const double k = 1.7;
     ProcessInfo info;
     info.SetValue(SCALE_FACTOR, k);

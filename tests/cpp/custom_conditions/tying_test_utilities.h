@@ -10,7 +10,6 @@
 
 #include "../custom_utilities/mortar_test_utilities.h"
 #include "contact_condition_test_utilities.h"
-#include "custom_utilities/mortar_normals.h"
 #include "custom_strategies/contact_master_slave_constraint.h"
 
 namespace contact_app::testing {
@@ -50,50 +49,9 @@ public:
     /// (historical) and the condition NORMAL are set from the slave face.
     std::shared_ptr<PairedCondition> MakePair(const std::string& name, const Eigen::MatrixXd& slave,
                                               const Eigen::MatrixXd& master, IndexType id = 1) {
-        const auto& row = DecodedName(name);
-        Geometry::PointsArrayType s, m;
-        for (int i = 0; i < slave.rows(); ++i) {
-            AddNode(i + 1, slave.row(i).transpose());
-            s.push_back(part->pGetNode(i + 1));
-        }
-        for (int i = 0; i < master.rows(); ++i) {
-            AddNode(slave.rows() + i + 1, master.row(i).transpose());
-            m.push_back(part->pGetNode(slave.rows() + i + 1));
-        }
-        const auto& prototype = dynamic_cast<const PairedCondition&>(Registry<Condition>::Instance().Get(name));
-        auto condition = std::dynamic_pointer_cast<PairedCondition>(
-            prototype.Create(id, CreateGeometry(FaceGeometryName(row.dim, row.num_slave), s), properties,
-                             CreateGeometry(FaceGeometryName(row.dim, row.num_master), m)));
-        SetSlaveNormals(*condition, row.dim);
+        auto condition = MakeRegisteredPair(*this, name, slave, master, id);
+        UpdateNormals(*condition, DecodedName(name).dim);
         return condition;
-    }
-
-    /// Historical NORMAL of the slave nodes and condition NORMAL from the current slave face.
-    static void SetSlaveNormals(PairedCondition& pair, int dim) {
-        auto& slave = const_cast<Geometry&>(pair.GetParentGeometry());
-        const int n = static_cast<int>(slave.size());
-        Eigen::MatrixXd x(n, dim), nodal;
-        Eigen::VectorXd center;
-        for (int i = 0; i < n; ++i) x.row(i) = slave[i].Coordinates().head(dim).transpose();
-        if (dim == 2) {
-            nodal = FaceNodalUnitNormals<2, 2, double>(NodeCoordinates<double, 2, 2>(x));
-            center = FaceCenterUnitNormal<2, 2, double>(NodeCoordinates<double, 2, 2>(x));
-        } else if (n == 3) {
-            nodal = FaceNodalUnitNormals<3, 3, double>(NodeCoordinates<double, 3, 3>(x));
-            center = FaceCenterUnitNormal<3, 3, double>(NodeCoordinates<double, 3, 3>(x));
-        } else {
-            nodal = FaceNodalUnitNormals<3, 4, double>(NodeCoordinates<double, 3, 4>(x));
-            center = FaceCenterUnitNormal<3, 4, double>(NodeCoordinates<double, 3, 4>(x));
-        }
-        for (int i = 0; i < n; ++i)
-            if (slave[i].SolutionStepsDataHas(NORMAL)) {
-                Array3 v = Array3::Zero();
-                v.head(dim) = nodal.row(i).transpose();
-                slave[i].FastGetSolutionStepValue(NORMAL) = v;
-            }
-        Array3 c = Array3::Zero();
-        c.head(dim) = center;
-        pair.SetValue(NORMAL, c);
     }
 
     Model model;
