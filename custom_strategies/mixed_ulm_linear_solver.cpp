@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
+
+#include <Eigen/LU>
 
 #include "custom_utilities/contact_variables.h"
 #include "contact_app/kernel/dof.h"
@@ -22,6 +25,90 @@ int ComponentOf(const Variable<double>& variable, const Variable<double>* const 
     for (int c = 0; c < 3; ++c)
         if (variable == *table[c]) return c;
     return -1;
+}
+
+using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+
+/// How far @p rows fall short of diagonal dominance: max over the rows of Σ_{k≠i}|a_ik| / |a_ii|, with i the row's own
+/// reduced position (@p rPositions); infinite for a zero diagonal.
+double DominanceDeficit(const RowMatrix& rows, const std::vector<int>& rPositions) {
+    double worst = 0.0;
+    for (int r = 0; r < rows.outerSize(); ++r) {
+        double diagonal = 0.0, others = 0.0;
+        for (RowMatrix::InnerIterator it(rows, r); it; ++it)
+            (it.col() == rPositions[r] ? diagonal : others) += std::abs(it.value());
+        worst = std::max(worst, diagonal > 0.0 ? others / diagonal : std::numeric_limits<double>::infinity());
+    }
+    return worst;
+}
+
+/// Brings the moved multiplier rows of each node to the size of the displacement rows whose places they take
+/// (docs/theory/condensation.md §5). A node's equations may be scaled and combined without changing the solution:
+/// either each row is scaled so that its diagonal becomes |K_ss| (rows_j := K_d,j diag(B_j)⁻¹ rows_j), or the node's
+/// rows are combined so that their block B_j on the node's own displacements becomes K_d,j = diag |K_ss| (rows_j :=
+/// K_d,j B_j⁻¹ rows_j). The combination is what a slipping node needs: its tangential rows depend most on its normal
+/// displacement (the μ|λ̄n| of the slip law), so their own diagonal is up to 70× smaller than another entry, and
+/// the AMG's Gauss–Seidel smoother then diverges. Of the two, each node takes the one whose rows are closer to
+/// diagonal dominance (the scaling where B_j cannot be inverted).
+void ScaleMovedRows(const SparseMatrixType& rA, const std::vector<std::pair<int, int>>& rPairs,
+                    const std::vector<int>& rReducedRow, const std::vector<int>& rNodeOfRow, SparseMatrixType& rReduced,
+                    SystemVectorType& rReducedB) {
+    using Triplet = Eigen::Triplet<double, int>;
+    // Reduced positions of the moved rows by node, with the diagonal of the displacement row each one replaces.
+    std::map<int, std::vector<std::pair<int, double>>> by_node;
+    for (const auto& [lambda, row] : rPairs) {
+        const int at = rReducedRow[lambda];
+        const double displacement = std::abs(rA.coeff(row, row));
+        // Without a node (none in the layout) a row is a block of its own.
+        const int node = row < static_cast<int>(rNodeOfRow.size()) && rNodeOfRow[row] > 0 ? rNodeOfRow[row] : -1 - row;
+        if (at >= 0 && displacement > 0.0) by_node[node].emplace_back(at, displacement);
+    }
+    // The moved rows, row-major (selected in by_node's order).
+    std::vector<int> positions;
+    for (const auto& [node, rows] : by_node)
+        for (const auto& [at, displacement] : rows) positions.push_back(at);
+    std::vector<Triplet> pick;
+    for (int r = 0; r < static_cast<int>(positions.size()); ++r) pick.emplace_back(r, positions[r], 1.0);
+    SparseMatrixType select(static_cast<int>(positions.size()), rReduced.rows());
+    select.setFromTriplets(pick.begin(), pick.end());
+    const RowMatrix moved_rows = RowMatrix(select * rReduced);
+
+    std::vector<Triplet> transform;
+    std::vector<char> moved(rReduced.rows(), 0);
+    int first = 0;
+    for (const auto& [node, rows] : by_node) {
+        const int m = static_cast<int>(rows.size());
+        const std::vector<int> own(positions.begin() + first, positions.begin() + first + m);
+        const RowMatrix node_rows = moved_rows.middleRows(first, m);
+        first += m;
+        Eigen::MatrixXd block(m, m), scaled = Eigen::MatrixXd::Zero(m, m);
+        for (int a = 0; a < m; ++a) {
+            for (int b = 0; b < m; ++b) block(a, b) = node_rows.coeff(a, own[b]);
+            scaled(a, a) = rows[a].second / (block(a, a) != 0.0 ? block(a, a) : rows[a].second);
+        }
+        const auto deficit = [&](const Eigen::MatrixXd& combination) {
+            return DominanceDeficit(RowMatrix(RowMatrix(combination.sparseView()) * node_rows), own);
+        };
+        Eigen::MatrixXd chosen = scaled;
+        const Eigen::FullPivLU<Eigen::MatrixXd> lu(block);
+        if (m > 1 && lu.isInvertible() && lu.rcond() > 1e-12) {
+            Eigen::MatrixXd combined = lu.inverse();
+            for (int a = 0; a < m; ++a) combined.row(a) *= rows[a].second;
+            if (deficit(combined) < deficit(scaled)) chosen = combined;
+        }
+        for (int a = 0; a < m; ++a) {
+            moved[own[a]] = 1;
+            for (int b = 0; b < m; ++b)
+                if (chosen(a, b) != 0.0) transform.emplace_back(own[a], own[b], chosen(a, b));
+        }
+    }
+    for (int i = 0; i < rReduced.rows(); ++i)
+        if (!moved[i]) transform.emplace_back(i, i, 1.0);
+    SparseMatrixType combine(rReduced.rows(), rReduced.rows());
+    combine.setFromTriplets(transform.begin(), transform.end());
+    rReduced = SparseMatrixType(combine * rReduced);
+    rReduced.makeCompressed();
+    rReducedB = combine * rReducedB;
 }
 
 }  // namespace
@@ -184,18 +271,7 @@ void MixedULMLinearSolver::Solve(SparseMatrixType& rA, SystemVectorType& rX, Sys
     reduced.setFromTriplets(kept.begin(), kept.end());
     reduced.makeCompressed();
     if (remap) {
-        // Each moved multiplier row is scaled to the diagonal of the displacement row whose place it takes (an
-        // equation's scale is free; the AMG's strength of connection reads it).
-        std::vector<double> scale(rows, 1.0);
-        for (const auto& [lambda, row] : pairs) {
-            const int at = reduced_row[lambda];
-            const double own = std::abs(reduced.coeff(at, at));
-            const double displacement = std::abs(rA.coeff(row, row));
-            if (at >= 0 && own > 0.0 && displacement > 0.0) scale[at] = displacement / own;
-        }
-        for (int col = 0; col < reduced.outerSize(); ++col)
-            for (SparseMatrixType::InnerIterator it(reduced, col); it; ++it) it.valueRef() *= scale[it.row()];
-        for (int i = 0; i < rows; ++i) reduced_b[i] *= scale[i];
+        ScaleMovedRows(rA, pairs, reduced_row, mLayout.node, reduced, reduced_b);
         mInner->ProvideUnknownLayout(mLayout.Subset(kept_unknowns));
     }
 

@@ -23,7 +23,10 @@ struct SaddleSystem {
     SparseMatrixType A;
     SystemVectorType b;
 
-    explicit SaddleSystem(bool dual) {
+    /// @p dual: the slave rows couple to their own multiplier only. @p slipping: the active node's multiplier rows
+    /// depend most on the other displacement component (as a slipping node's tangential rows on its normal
+    /// displacement through μ|λ̄n|), so their own diagonal is small.
+    explicit SaddleSystem(bool dual, bool slipping = false) {
         RegisterContactApplication();
         part = &model.CreateModelPart("Structure");
         part->AddNodalSolutionStepVariable(DISPLACEMENT);
@@ -61,8 +64,9 @@ struct SaddleSystem {
             K(eq(1, c), eq(1, 2 + c)) = 2.5;
             if (!dual) K(eq(1, c), eq(1, 2 + (1 - c))) = 0.3;  // standard basis: not diagonal
             K(eq(3, c), eq(1, 2 + c)) = -2.5;
-            K(eq(1, 2 + c), eq(1, c)) = 1.7;
+            K(eq(1, 2 + c), eq(1, c)) = slipping ? 0.05 : 1.7;
             K(eq(1, 2 + c), eq(3, c)) = -1.7;
+            if (slipping) K(eq(1, 2 + c), eq(1, 1 - c)) = c == 0 ? 40.0 : -35.0;
             K(eq(1, 2 + c), eq(1, 2 + c)) = 0.4;
             // Inactive node 2: −k²/ε λ on its multiplier rows only; interior node 4 multipliers unused (identity).
             K(eq(2, 2 + c), eq(2, 2 + c)) = -3.0;
@@ -94,6 +98,58 @@ TEST(MixedULMLinearSolver, CondensedSolutionEqualsTheFullSolveWithDualMultiplier
     EXPECT_EQ(solver.LastCondensedMultipliers(), 2u);  // λx, λy of the active node
     EXPECT_LT((condensed - full).norm(), 1e-12 * full.norm());
     EXPECT_LT((system.A * condensed - system.b).norm(), 1e-11 * system.b.norm());
+}
+
+/// UMFPACK that asks for the unknown layout (as the PETSc AMG does) and keeps the reduced system it solves.
+class RecordingSolver : public LinearSolver {
+public:
+    void Solve(SparseMatrixType& rA, SystemVectorType& rX, SystemVectorType& rB) override {
+        reduced = rA;
+        Umfpack()->Solve(rA, rX, rB);
+    }
+    std::string Info() const override { return "recording"; }
+    bool UnknownLayoutIsNeeded() const override { return true; }
+    void ProvideUnknownLayout(UnknownLayout layout) override { kept = std::move(layout); }
+    SparseMatrixType reduced;
+    UnknownLayout kept;
+};
+
+/// The moved multiplier rows of node 1 in the reduced system (the positions of its displacement unknowns).
+Eigen::Matrix2d NodeOneBlock(const RecordingSolver& inner) {
+    Eigen::Matrix2d block;
+    std::vector<int> at;
+    for (int i = 0; i < static_cast<int>(inner.kept.size()); ++i)
+        if (inner.kept.node[i] == 1) at.push_back(i);
+    EXPECT_EQ(at.size(), 2u);
+    for (int a = 0; a < 2; ++a)
+        for (int b = 0; b < 2; ++b) block(a, b) = inner.reduced.coeff(at[a], at[b]);
+    return block;
+}
+
+TEST(MixedULMLinearSolver, ForALayoutEachNodesMovedRowsTakeTheDisplacementDiagonal) {
+    // docs/theory/condensation.md §5: the moved rows of a node are combined (slipping) or scaled (sticking) so that
+    // their block on the node's displacements is diag |K_ss|; the solution is the full solve's either way.
+    for (const bool slipping : {false, true}) {
+        SaddleSystem system(true, slipping);
+        SystemVectorType full = SystemVectorType::Zero(system.b.size()), condensed = full;
+        SparseMatrixType A_full = system.A;
+        SystemVectorType b_full = system.b;
+        Umfpack()->Solve(A_full, full, b_full);
+        auto inner = std::make_shared<RecordingSolver>();
+        MixedULMLinearSolver solver(inner);
+        solver.ProvideAdditionalData(system.dofs, *system.part);
+        solver.Solve(system.A, condensed, system.b);
+        ASSERT_TRUE(solver.LastSolveWasCondensed());
+        EXPECT_LT((condensed - full).norm(), 1e-12 * full.norm()) << "slipping " << slipping;
+        const Eigen::Matrix2d block = NodeOneBlock(*inner);
+        const Eigen::Vector2d displacement(system.A.coeff(0, 0), system.A.coeff(1, 1));
+        for (int a = 0; a < 2; ++a) {
+            EXPECT_NEAR(block(a, a), displacement[a], 1e-12 * displacement[a]) << "slipping " << slipping;
+            // Slipping: the combination removes the cross-coupling (row-wise scaling would leave it about 800× the
+            // diagonal, 40 against 0.05).
+            if (slipping) EXPECT_LT(std::abs(block(a, 1 - a)), 1e-12 * displacement[a]);
+        }
+    }
 }
 
 TEST(MixedULMLinearSolver, FallsBackToTheFullSolveWhenTheCouplingIsNotDiagonal) {

@@ -61,10 +61,13 @@ def test_amgcl_gives_the_umfpack_solution_of_hertz_3d(tmp_path: Path) -> None:
 
 @needs_petsc
 def test_amgcl_gives_the_umfpack_solution_of_a_frictional_3d_case(tmp_path: Path) -> None:
-    """cattaneo_mindlin_3d at its coarsest level: pressed (steps 1-4), then pulled (5-6, stick).
+    """cattaneo_mindlin_3d at level 2, the whole history, slip included.
 
-    Its later steps are left out: at this level step 8 does not converge even with UMFPACK, and
-    the iterative solver breaks down one step earlier (docs/running.md, "Iterative solver").
+    Pressed (steps 1-4), then pulled into partial slip (5-8, 3 to 6 slipping nodes; nodes also
+    slip in step 1). A slipping node's condensed rows are combined before the AMG sees them
+    (docs/theory/condensation.md §5) and GMRES runs as FGMRES (docs/running.md): measured at
+    tolerance 1e-6, the slip steps took 115-136 Krylov iterations per solve before the
+    combination and 33-39 with it, and at level 3 plain GMRES broke down in step 1.
     """
     folder = Path(__file__).resolve().parents[3] / "examples" / "cattaneo_mindlin_3d"
     sys.path.insert(0, str(folder))
@@ -80,19 +83,17 @@ def test_amgcl_gives_the_umfpack_solution_of_a_frictional_3d_case(tmp_path: Path
             linear["tolerance"] = 1.0e-10
         parameters["solver_settings"]["linear_solver_settings"] = linear
         parameters.pop("output_processes", None)
-        parameters["problem_data"]["end_time"] = 1.5
         (workdir / "ProjectParameters.json").write_text(json.dumps(parameters))
-        results[solver_type] = example.run(workdir, refinement=1)
+        results[solver_type] = example.run(workdir, refinement=2)
     direct, krylov = results["umfpack"], results["amgcl"]
     assert direct.converged and krylov.converged
+    assert len(krylov.steps) == 8
     # Newton may take one iteration more or less where a criterion sits at round-off.
     for ours, theirs in zip(krylov.steps, direct.steps, strict=True):
         assert abs(ours.iterations - theirs.iterations) <= 1
         assert (ours.active, ours.slipping) == (theirs.active, theirs.slipping)
         assert ours.max_shear == pytest.approx(theirs.max_shear, rel=1e-5)
-    assert (
-        direct.steps[-1].max_shear > 0.0
-    )  # the tangential load is carried (in stick at this level)
+    assert [step.slipping for step in direct.steps[4:]] == [3, 4, 5, 6]
     assert krylov.a == pytest.approx(direct.a, rel=1e-6)
 
 
