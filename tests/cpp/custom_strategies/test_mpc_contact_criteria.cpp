@@ -185,6 +185,28 @@ TEST(MPCContactCriteria, FrictionalStickSlipComparesForcesWithForces) {
     EXPECT_EQ(f.criteria.LastSlipFlips(), 0u);
 }
 
+TEST(MPCContactCriteria, TheStickTestLeavesOutTheSupportReactionOfAPrescribedComponent) {
+    // On a symmetry plane the REACTION of a slave node also holds the support's force along the plane's normal; the
+    // constraint does not exert it (docs/theory/active_set.md §4). Both nodes: |F_τ| = 0.7 > μ|F·n| = 0.5 along x.
+    // Node 1 has DISPLACEMENT_X prescribed: that reaction is the support's, and the node sticks.
+    MPCCriteriaFixture f(0.0);
+    f.model.part->GetSubModelPart("Contact").Set(SLIP, true);
+    for (IndexType id : {1, 2}) {
+        f.SlaveNode(id).SetValue(FRICTION_COEFFICIENT, 0.5);
+        f.SlaveNode(id).Set(SLIP, false);
+        f.SetForce(id, -1.0, 0.7);
+    }
+    ASSERT_NEAR(std::abs(f.SlaveNode(1).FastGetSolutionStepValue(REACTION)[0]), 0.7, 1e-12);  // the tangent is x
+    f.SlaveNode(1).Fix(DISPLACEMENT_X);
+    f.Post();
+    EXPECT_FALSE(f.SlaveNode(1).Is(SLIP));
+    EXPECT_TRUE(f.SlaveNode(2).Is(SLIP));
+    EXPECT_EQ(f.criteria.LastSlipFlips(), 1u);
+    // The friction written for node 1 has no component along the prescribed direction.
+    EXPECT_NEAR(f.SlaveNode(1).GetValue(TANGENTIAL_CONTACT_STRESS), 0.0, 1e-12);
+    EXPECT_NEAR(f.SlaveNode(1).GetValue(CONTACT_FORCE)[0], 0.0, 1e-12);
+}
+
 TEST(MPCContactCriteria, StickTestUsesTheLumpedAreaConsistently) {
     // Slave face of length 2 → NODAL_MAUX = 1; scale the face to length 8 → NODAL_MAUX = 4: the verdict must not
     // change (a traction compared with a force, the reference's B9, would flip it).
