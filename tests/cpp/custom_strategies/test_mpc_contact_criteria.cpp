@@ -53,6 +53,14 @@ struct MPCCriteriaFixture {
         const Array3 t(-n[1], n[0], 0.0);
         SlaveNode(id).FastGetSolutionStepValue(REACTION) = normal_force * n + tangential_force * t;
     }
+    /// "Contact" frictional, both slave nodes sticking with FRICTION_COEFFICIENT @p mu.
+    void MakeFrictional(double mu) {
+        model.part->GetSubModelPart("Contact").Set(SLIP, true);
+        for (IndexType id : {1, 2}) {
+            SlaveNode(id).SetValue(FRICTION_COEFFICIENT, mu);
+            SlaveNode(id).Set(SLIP, false);
+        }
+    }
     bool Post() {
         ModelPart& root = *model.part;
         DofsArrayType dofs;
@@ -155,11 +163,7 @@ TEST(MPCContactCriteria, NothingIsJudgedBeforeTheFirstIteration) {
 
 TEST(MPCContactCriteria, FrictionalStickSlipComparesForcesWithForces) {
     MPCCriteriaFixture f(0.0);
-    f.model.part->GetSubModelPart("Contact").Set(SLIP, true);
-    for (IndexType id : {1, 2}) {
-        f.SlaveNode(id).SetValue(FRICTION_COEFFICIENT, 0.5);
-        f.SlaveNode(id).Set(SLIP, false);
-    }
+    f.MakeFrictional(0.5);
     // |F_τ| = 0.3 ≤ μ|F·n| = 0.5: stick; |F_τ| = 0.7 > 0.5: slip.
     f.SetForce(1, -1.0, 0.3);
     f.SetForce(2, -1.0, 0.7);
@@ -190,12 +194,8 @@ TEST(MPCContactCriteria, TheStickTestLeavesOutTheSupportReactionOfAPrescribedCom
     // constraint does not exert it (docs/theory/active_set.md §4). Both nodes: |F_τ| = 0.7 > μ|F·n| = 0.5 along x.
     // Node 1 has DISPLACEMENT_X prescribed: that reaction is the support's, and the node sticks.
     MPCCriteriaFixture f(0.0);
-    f.model.part->GetSubModelPart("Contact").Set(SLIP, true);
-    for (IndexType id : {1, 2}) {
-        f.SlaveNode(id).SetValue(FRICTION_COEFFICIENT, 0.5);
-        f.SlaveNode(id).Set(SLIP, false);
-        f.SetForce(id, -1.0, 0.7);
-    }
+    f.MakeFrictional(0.5);
+    for (IndexType id : {1, 2}) f.SetForce(id, -1.0, 0.7);
     ASSERT_NEAR(std::abs(f.SlaveNode(1).FastGetSolutionStepValue(REACTION)[0]), 0.7, 1e-12);  // the tangent is x
     f.SlaveNode(1).Fix(DISPLACEMENT_X);
     f.Post();
