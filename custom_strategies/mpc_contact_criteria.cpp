@@ -39,9 +39,8 @@ double YoungModulus(const ModelPart& rModelPart) {
 /// held multiplier component out of their trial, docs/theory/active_set.md §4).
 Array3 ContactForceOfReaction(const Node& node) {
     Array3 force = node.FastGetSolutionStepValue(REACTION);
-    const Variable<double>* const components[] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
     for (int c = 0; c < 3; ++c)
-        if (node.IsFixed(*components[c])) force[c] = 0.0;
+        if (ContactUtilities::IsDisplacementComponentPrescribed(node, c)) force[c] = 0.0;
     return force;
 }
 

@@ -65,10 +65,15 @@ Array3 ContactUtilities::TransmittedWeightedSlip(const Node& node) {
 namespace {
 const Variable<double>* const kMultiplierComponents[3] = {&VECTOR_LAGRANGE_MULTIPLIER_X, &VECTOR_LAGRANGE_MULTIPLIER_Y,
                                                           &VECTOR_LAGRANGE_MULTIPLIER_Z};
+const Variable<double>* const kDisplacementComponents[3] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
 }  // namespace
 
 bool ContactUtilities::IsMultiplierComponentHeld(const Node& node, int c) {
     return node.HasDofFor(*kMultiplierComponents[c]) && node.IsFixed(*kMultiplierComponents[c]);
+}
+
+bool ContactUtilities::IsDisplacementComponentPrescribed(const Node& node, int c) {
+    return node.IsFixed(*kDisplacementComponents[c]);
 }
 
 double ContactUtilities::CalculateMaxNodalH(const ModelPart& model_part) {
@@ -103,7 +108,6 @@ double ContactUtilities::CalculateRelativeSizeMesh(const ModelPart& model_part) 
 void ContactUtilities::ComputeStepJump(ModelPart& model_part, double delta_time, bool half_step) {
     const double velocity_factor = half_step ? 0.25 : 0.5;
     const double acceleration_factor = half_step ? 0.125 : 0.5;
-    const Variable<double>* displacement_components[3] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
     for (const auto& node : model_part.Nodes()) {
         CONTACT_CHECK(node->SolutionStepsDataHas(VELOCITY) && node->SolutionStepsDataHas(ACCELERATION), InputError,
                       "ComputeStepJump: node ", node->Id(), " of model part ", model_part.FullName(),
@@ -115,7 +119,7 @@ void ContactUtilities::ComputeStepJump(ModelPart& model_part, double delta_time,
         Array3 jump = velocity_factor * delta_time * (velocity + velocity_old) +
                       acceleration_factor * delta_time * delta_time * acceleration_old;
         for (int c = 0; c < 3; ++c)
-            if (node->IsFixed(*displacement_components[c])) jump[c] = 0.0;
+            if (IsDisplacementComponentPrescribed(*node, c)) jump[c] = 0.0;
         node->SetValue(DELTA_COORDINATES, jump);
     }
 }

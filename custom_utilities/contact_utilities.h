@@ -40,6 +40,9 @@ public:
     /// @brief Whether component @p c of the node's VECTOR_LAGRANGE_MULTIPLIER is a fixed DoF: held at a symmetry plane
     ///        (FixSymmetryPlaneMultipliers) or by the user, so it carries no traction (docs/theory/mortar.md §8).
     static bool IsMultiplierComponentHeld(const Node& node, int c);
+    /// @brief Whether component @p c of the node's DISPLACEMENT is prescribed (a fixed DoF): the support, not the
+    ///        contact, carries the force along it (a symmetry plane), and the node does not move along it.
+    static bool IsDisplacementComponentPrescribed(const Node& node, int c);
     /// @brief Largest NODAL_H of the nodes of @p model_part (0 for an empty part).
     static double CalculateMaxNodalH(const ModelPart& model_part);
     /// @brief Arithmetic mean of NODAL_H over the nodes of @p model_part (0 for an empty part).
