@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_conditions/mesh_tying_mortar_condition.h"
 
-#include <sstream>
 #include <utility>
 
 #include "custom_utilities/contact_variables.h"
@@ -116,23 +115,7 @@ void TYING_CLASS::Initialize(const ProcessInfo& rCurrentProcessInfo) {
 }
 
 TYING_TEMPLATE
-void TYING_CLASS::CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
-                                       const ProcessInfo& rCurrentProcessInfo) {
-    CalculateConditionSystem(&rLeftHandSideMatrix, &rRightHandSideVector, rCurrentProcessInfo);
-}
-
-TYING_TEMPLATE
-void TYING_CLASS::CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) {
-    CalculateConditionSystem(&rLeftHandSideMatrix, nullptr, rCurrentProcessInfo);
-}
-
-TYING_TEMPLATE
-void TYING_CLASS::CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo& rCurrentProcessInfo) {
-    CalculateConditionSystem(nullptr, &rRightHandSideVector, rCurrentProcessInfo);
-}
-
-TYING_TEMPLATE
-void TYING_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const ProcessInfo& rCurrentProcessInfo) const {
+void TYING_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const ProcessInfo& rCurrentProcessInfo) {
     const auto& tied = TiedVariables();
     const int n = static_cast<int>(tied.size());
     const int size = LocalSize();
@@ -206,22 +189,11 @@ void TYING_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInf
 }
 
 TYING_TEMPLATE
-void TYING_CLASS::EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const {
-    DofsVectorType dofs;
-    GetDofList(dofs, rCurrentProcessInfo);
-    rResult.resize(dofs.size());
-    for (std::size_t i = 0; i < dofs.size(); ++i) rResult[i] = dofs[i]->EquationId();
-}
-
-TYING_TEMPLATE
 int TYING_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
     PairedCondition::Check(rCurrentProcessInfo);  // unpaired: YOU HAVE NOT INITIALIZED THE PAIR GEOMETRY
+    CheckNodeCounts("MeshTyingMortarCondition", TNS, TNM);
     const Geometry& slave = GetParentGeometry();
     const Geometry& master = GetPairedGeometry();
-    CONTACT_CHECK(static_cast<int>(slave.size()) == TNS && static_cast<int>(master.size()) == TNM, InputError,
-                  "MeshTyingMortarCondition ", Id(), " pairs a ", slave.size(), "-node slave with a ", master.size(),
-                  "-node master\n  expected: ", TNS, " and ", TNM,
-                  " nodes\n  fix: use the condition name whose suffix matches the two faces");
     const TyingVariables tying = ResolveTyingVariables();
     auto check_node = [&](const Node& node, const char* side, const VariableData& variable,
                           const std::vector<const Variable<double>*>& components) {
@@ -262,10 +234,7 @@ void TYING_CLASS::Load(Serializer& rSerializer) {
 
 TYING_TEMPLATE
 std::string TYING_CLASS::Info() const {
-    std::ostringstream out;
-    out << "MeshTyingMortarCondition #" << Id() << " (slave " << GetParentGeometry().Name() << ", master "
-        << (HasPairedGeometry() ? GetPairedGeometry().Name() : std::string("none")) << ")";
-    return out.str();
+    return PairInfo("MeshTyingMortarCondition");
 }
 
 #undef TYING_TEMPLATE

@@ -37,15 +37,8 @@ public:
     /// first call after Load only the variable is resolved: the operators stay those of the saving run.
     /// @throws InputError for an unknown variable or one that is neither double nor a 3-vector
     void Initialize(const ProcessInfo& rCurrentProcessInfo) override;
-    /// @param[out] rLeftHandSideMatrix, rRightHandSideVector dof_size·(2 n_s + n_m); zero for a deactivated pair
-    /// @param[in] rCurrentProcessInfo SCALE_FACTOR (else BUILD_SCALE_FACTOR, else 1) scales the multiplier rows
-    void CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
-                              const ProcessInfo& rCurrentProcessInfo) override;
-    void CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) override;
-    void CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo& rCurrentProcessInfo) override;
     /// [master tied components, slave tied components, slave multipliers], node-major.
     /// @throws InputError if a DoF is missing
-    void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
     void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
     /// @throws InputError: unpaired, wrong node counts, a bad TYING_VARIABLE, or a node lacking the tied variable
     ///         (historical) or its DoFs, or (slave) the multiplier variable or its DoFs
@@ -64,6 +57,11 @@ public:
     /// dof_size·(2 n_s + n_m).
     int LocalSize() const { return DofSize() * (2 * TNumNodes + TNumNodesMaster); }
 
+protected:
+    /// @param[out] pLhs, pRhs dof_size·(2 n_s + n_m) (either may be null); zero for a deactivated pair
+    /// @param[in] rCurrentProcessInfo SCALE_FACTOR (else BUILD_SCALE_FACTOR, else 1) scales the multiplier rows
+    void CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const ProcessInfo& rCurrentProcessInfo) override;
+
 private:
     struct TyingVariables {
         std::vector<const Variable<double>*> dofs;  ///< tied components
@@ -75,7 +73,6 @@ private:
     TyingVariables ResolveTyingVariables() const;
     /// The resolved components (from Initialize, or resolved now before it).
     const std::vector<const Variable<double>*>& TiedVariables() const;
-    void CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const ProcessInfo& rCurrentProcessInfo) const;
 
     Operators mOperators;
     bool mDual = false;

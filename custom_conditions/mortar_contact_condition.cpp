@@ -67,35 +67,10 @@ void MORTAR_CLASS::Load(Serializer& rSerializer) {
 }
 
 MORTAR_TEMPLATE
-void MORTAR_CLASS::CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
-                                        const ProcessInfo& rCurrentProcessInfo) {
-    CalculateConditionSystem(&rLeftHandSideMatrix, &rRightHandSideVector, rCurrentProcessInfo);
-}
-
-MORTAR_TEMPLATE
-void MORTAR_CLASS::CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) {
-    Vector rhs;
-    CalculateConditionSystem(&rLeftHandSideMatrix, &rhs, rCurrentProcessInfo);
-}
-
-MORTAR_TEMPLATE
-void MORTAR_CLASS::CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo& rCurrentProcessInfo) {
-    CalculateConditionSystem(nullptr, &rRightHandSideVector, rCurrentProcessInfo);
-}
-
-MORTAR_TEMPLATE
 InternalError MORTAR_CLASS::NotInBase(const char* method) const {
     return InternalError(detail::Concat("MortarContactCondition::", method, " called on condition ", Id(),
                                         ": the base class has no formulation family (this is a bug in contact_app;",
                                         " please report it with the registered condition name)"));
-}
-
-MORTAR_TEMPLATE
-void MORTAR_CLASS::EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const {
-    DofsVectorType dofs;
-    GetDofList(dofs, rCurrentProcessInfo);
-    rResult.resize(dofs.size());
-    for (std::size_t i = 0; i < dofs.size(); ++i) rResult[i] = dofs[i]->EquationId();
 }
 
 MORTAR_TEMPLATE
@@ -220,6 +195,8 @@ void MORTAR_CLASS::RecordForcePerNormal(const NodeCoordinates<double, TDim, TNS>
 MORTAR_TEMPLATE
 void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const ProcessInfo& rCurrentProcessInfo) {
     constexpr int slave_dofs = TDim * TNS, master_dofs = TDim * TNM;
+    Vector unused_rhs;  // the tangent pass differentiates the residual, so it has one either way
+    if (pRhs == nullptr) pRhs = &unused_rhs;
     if (pLhs) {
         pLhs->setZero(MatrixSize, MatrixSize);
         mForcePerNormal.resize(0, 0);

@@ -70,19 +70,6 @@ public:
 
     /// Resets ISOLATED and the nodal share (the search rebuilt the pair).
     void Initialize(const ProcessInfo& rCurrentProcessInfo) override;
-    /// @param[out] rLeftHandSideMatrix MatrixSize², −∂RHS/∂q
-    /// @param[out] rRightHandSideVector MatrixSize
-    /// @param[in] rCurrentProcessInfo the family's factors (SCALE_FACTOR, TANGENT_FACTOR, ...) and the
-    ///            segmentation tolerances (DISTANCE_THRESHOLD, ZERO_TOLERANCE_FACTOR)
-    void CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
-                              const ProcessInfo& rCurrentProcessInfo) override;
-    void CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) override;
-    /// Double evaluation only (no derivative work).
-    void CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo& rCurrentProcessInfo) override;
-    /// The equation ids of GetDofList, in its order.
-    /// @param[out] rResult MatrixSize ids
-    /// @param[in] rCurrentProcessInfo handed on to GetDofList
-    void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
     /// @throws InternalError (families implement it)
     void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
     /// Integer state of the slave nodes (family encoding). @throws InternalError in the base
@@ -111,6 +98,11 @@ public:
     SegmentationSettings SegmentationSettingsFrom(const ProcessInfo& rCurrentProcessInfo) const;
 
 protected:
+    /// @param[out] pLhs MatrixSize², −∂RHS/∂q (null: the RHS alone, a double evaluation without derivative work)
+    /// @param[out] pRhs MatrixSize (null: computed by the tangent pass all the same, then dropped)
+    /// @param[in] rCurrentProcessInfo the family's factors (SCALE_FACTOR, TANGENT_FACTOR, ...) and the
+    ///            segmentation tolerances (DISTANCE_THRESHOLD, ZERO_TOLERANCE_FACTOR)
+    void CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const ProcessInfo& rCurrentProcessInfo) override;
     /// The multiplier values of the slave nodes (the λ block of q): empty for a family without multipliers,
     /// otherwise @throws InternalError in the base
     virtual MultiplierVector MultiplierValues() const;
@@ -135,7 +127,6 @@ private:
     /// ∂RHS/∂n of the slave nodes' normals (MatrixSize × d n_s) of the last tangent evaluation; empty when not recorded.
     Matrix mForcePerNormal;
 
-    void CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const ProcessInfo& rCurrentProcessInfo);
     /// The second AD pass of a tangent evaluation whose nodal normals follow the iterate: the residual with the normals
     /// seeded (coordinates and multipliers constant; M the only operator that reads them) into mForcePerNormal.
     void RecordForcePerNormal(const NodeCoordinates<double, TDim, TNumNodes>& x1,

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_conditions/mpc_mortar_contact_condition.h"
 
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
-#include <sstream>
 #include <utility>
 
 #include <Eigen/LU>
@@ -220,6 +221,12 @@ MPCConstraintRelation MPC_CLASS::ComputeConstraintRelation(const ProcessInfo& rC
                     if (std::abs(Q(i, j)) > 1.0e-12)
                         for (int a = 0; a < TDim; ++a) result.relation(i * TDim + a, j * TDim + a) = weight * Q(i, j);
             for (int a = 0; a < TDim; ++a) result.constant[i * TDim + a] = normal_constant * n[a];
+            if (active && Is(SLIP) && std::getenv("MPC_INCREMENTAL_STICK")) {
+                const Eigen::Matrix<double, TDim, 1> offset = relative - n.dot(relative) * n;
+                for (int a = 0; a < TDim; ++a) result.constant[i * TDim + a] += weight * offset[a];
+                if (std::getenv("MPC_DEBUG") && offset.norm() > 0.0)
+                    std::fprintf(stderr, "offset node %d |offset| %g weight %g prev %g\n", int(node.Id()), offset.norm(), weight, PreviousDisplacement<TDim>(node).norm());
+            }
             continue;
         }
         // Normal only: the one scalar row n·u_s = n·(Q u_m) + c, solved for the component a* with the largest |n_a|;
@@ -301,15 +308,11 @@ void MPC_CLASS::UpdateConstraint(const ProcessInfo& rCurrentProcessInfo) {
 }
 
 MPC_TEMPLATE
-void MPC_CLASS::CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
-                                     const ProcessInfo& rCurrentProcessInfo) {
-    CalculateLeftHandSide(rLeftHandSideMatrix, rCurrentProcessInfo);
-    CalculateRightHandSide(rRightHandSideVector, rCurrentProcessInfo);
-}
-
-MPC_TEMPLATE
-void MPC_CLASS::CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) {
-    rLeftHandSideMatrix.setZero(MatrixSize, MatrixSize);
+void MPC_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const ProcessInfo& rCurrentProcessInfo) {
+    if (pRhs) pRhs->setZero(MatrixSize);
+    if (pLhs == nullptr) return;
+    Matrix& lhs = *pLhs;
+    lhs.setZero(MatrixSize, MatrixSize);
     if (!Is(SLIP) || !mPreviousMortarOperatorsInitialized) return;
     const Geometry& slave = GetParentGeometry();
     bool any_slip = false;
@@ -355,13 +358,8 @@ void MPC_CLASS::CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const Process
         // The row of the solved-for component is the constraint's, not an equation (its residual is the force λ).
         const VectorD v = n - friction.mu * friction.direction;
         block.row(TDim * TNM + i * TDim + static_cast<int>(PivotComponent<TDim>(n, v))).setZero();
-        rLeftHandSideMatrix -= block;  // the LHS is −d(force)/du
+        lhs -= block;  // the LHS is −d(force)/du
     }
-}
-
-MPC_TEMPLATE
-void MPC_CLASS::CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo&) {
-    rRightHandSideVector.setZero(MatrixSize);
 }
 
 MPC_TEMPLATE
@@ -374,14 +372,6 @@ void MPC_CLASS::GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo&
         for (int c = 0; c < TDim; ++c) rElementalDofList.push_back(&master[l].GetDof(*kDisplacementComponents[c]));
     for (int j = 0; j < TNS; ++j)
         for (int c = 0; c < TDim; ++c) rElementalDofList.push_back(&slave[j].GetDof(*kDisplacementComponents[c]));
-}
-
-MPC_TEMPLATE
-void MPC_CLASS::EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const {
-    DofsVectorType dofs;
-    GetDofList(dofs, rCurrentProcessInfo);
-    rResult.resize(dofs.size());
-    for (std::size_t i = 0; i < dofs.size(); ++i) rResult[i] = dofs[i]->EquationId();
 }
 
 MPC_TEMPLATE
@@ -425,12 +415,9 @@ void MPC_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) 
 MPC_TEMPLATE
 int MPC_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
     PairedCondition::Check(rCurrentProcessInfo);
+    CheckNodeCounts("MPCMortarContactCondition", TNS, TNM);
     const Geometry& slave = GetParentGeometry();
     const Geometry& master = GetPairedGeometry();
-    CONTACT_CHECK(static_cast<int>(slave.size()) == TNS && static_cast<int>(master.size()) == TNM, InputError,
-                  "MPCMortarContactCondition ", Id(), " pairs a ", slave.size(), "-node slave with a ", master.size(),
-                  "-node master\n  expected: ", TNS, " and ", TNM,
-                  " nodes\n  fix: use the condition name whose suffix matches the two faces");
     auto check_node = [&](const Node& node, const char* side, bool is_slave) {
         std::vector<const VariableData*> variables = {&DISPLACEMENT};
         if (is_slave) variables.insert(variables.end(), {&NORMAL, &WEIGHTED_GAP});
@@ -467,10 +454,7 @@ void MPC_CLASS::Load(Serializer& rSerializer) {
 
 MPC_TEMPLATE
 std::string MPC_CLASS::Info() const {
-    std::ostringstream out;
-    out << "MPCMortarContactCondition #" << Id() << " (slave " << GetParentGeometry().Name() << ", master "
-        << (HasPairedGeometry() ? GetPairedGeometry().Name() : std::string("none")) << ")";
-    return out.str();
+    return PairInfo("MPCMortarContactCondition");
 }
 
 #undef MPC_TEMPLATE

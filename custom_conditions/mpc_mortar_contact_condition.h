@@ -60,20 +60,7 @@ public:
     /// Previous operators recomputed if Is(SLIP) (start of the next step).
     void FinalizeSolutionStep(const ProcessInfo& rCurrentProcessInfo) override;
 
-    /// CalculateLeftHandSide and a zero RHS: the Coulomb force of a slipping node is carried by the constraint's
-    /// test relation (MPCConstraintRelation::test_relation), not by a nodal force.
-    void CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
-                              const ProcessInfo& rCurrentProcessInfo) override;
-    /// Zero (MatrixSize²) except, if Is(SLIP), the tangent of the slip direction of every SLIP slave node i whose
-    /// TANGENT_XI e is the direction of its slip of the step s (+WEIGHTED_SLIP made tangent to n): the Coulomb force
-    /// f = μ|λ| s/|s| (λ = REACTION·n) turns with s, df = μ|λ| P ds/|s|, P = I − ŝŝᵀ − nnᵀ, and this pair's share of
-    /// ds is M⁰_ij du_m,j − D⁰_ik du_s,k (start-of-step operators); f reaches the slave and, by −Q_ij, the masters.
-    /// The row of the component the normal row is solved for is left out (docs/theory/mortar.md §9).
-    void CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) override;
-    /// Zero (MatrixSize).
-    void CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo& rCurrentProcessInfo) override;
     /// [master DISPLACEMENT_*, slave DISPLACEMENT_*]. @throws InputError if a DoF is missing
-    void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
     void GetDofList(DofsVectorType& rElementalDofList, const ProcessInfo& rCurrentProcessInfo) const override;
     /// Adds the pair's weighted gap to the historical WEIGHTED_GAP, D_jj to NODAL_AREA (dual only) and, if
     /// Is(SLIP), the weighted slip (previous operators) to the historical WEIGHTED_SLIP; sets ISOLATED afresh.
@@ -101,6 +88,19 @@ public:
 
     const Operators& GetPreviousMortarOperators() const { return mPreviousMortarOperators; }
     bool PreviousMortarOperatorsInitialized() const { return mPreviousMortarOperatorsInitialized; }
+
+protected:
+    /// @brief A zero RHS: the Coulomb force of a slipping node is carried by the constraint's test relation
+    ///        (MPCConstraintRelation::test_relation), not by a nodal force. The LHS is zero except, if Is(SLIP), the
+    ///        tangent of the slip direction of every SLIP slave node i whose TANGENT_XI e is the direction of its slip
+    ///        of the step s (+WEIGHTED_SLIP made tangent to n): the Coulomb force f = μ|λ| s/|s| (λ = REACTION·n) turns
+    ///        with s, df = μ|λ| P ds/|s|, P = I − ŝŝᵀ − nnᵀ, and this pair's share of ds is M⁰_ij du_m,j − D⁰_ik du_s,k
+    ///        (start-of-step operators); f reaches the slave and, by −Q_ij, the masters. The row of the component the
+    ///        normal row is solved for is left out (docs/theory/mortar.md §9).
+    /// @param[out] pLhs MatrixSize² (null: not asked for)
+    /// @param[out] pRhs MatrixSize, zero (null: not asked for)
+    /// @param[in] rCurrentProcessInfo the segmentation settings of the current operators
+    void CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const ProcessInfo& rCurrentProcessInfo) override;
 
 private:
     Operators CurrentOperators(const ProcessInfo& rCurrentProcessInfo, bool& dual) const;

@@ -93,11 +93,47 @@ void PairedCondition::Load(Serializer& rSerializer) {
     rSerializer.Load("PairedNormal", mPairedNormal);
 }
 
-std::string PairedCondition::Info() const {
+std::string PairedCondition::Info() const { return PairInfo("PairedCondition"); }
+
+std::string PairedCondition::PairInfo(const char* name) const {
     std::ostringstream out;
-    out << "PairedCondition #" << Id() << " (slave " << GetParentGeometry().Name() << ", master "
+    out << name << " #" << Id() << " (slave " << GetParentGeometry().Name() << ", master "
         << (HasPairedGeometry() ? GetPairedGeometry().Name() : std::string("none")) << ")";
     return out.str();
+}
+
+void PairedCondition::CheckNodeCounts(const char* name, int num_slave, int num_master) const {
+    const Geometry& slave = GetParentGeometry();
+    const Geometry& master = GetPairedGeometry();
+    CONTACT_CHECK(static_cast<int>(slave.size()) == num_slave && static_cast<int>(master.size()) == num_master,
+                  InputError, name, " ", Id(), " pairs a ", slave.size(), "-node slave with a ", master.size(),
+                  "-node master\n  expected: ", num_slave, " and ", num_master,
+                  " nodes\n  fix: use the condition name whose suffix matches the two faces");
+}
+
+void PairedCondition::CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
+                                           const ProcessInfo& rCurrentProcessInfo) {
+    CalculateConditionSystem(&rLeftHandSideMatrix, &rRightHandSideVector, rCurrentProcessInfo);
+}
+
+void PairedCondition::CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) {
+    CalculateConditionSystem(&rLeftHandSideMatrix, nullptr, rCurrentProcessInfo);
+}
+
+void PairedCondition::CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo& rCurrentProcessInfo) {
+    CalculateConditionSystem(nullptr, &rRightHandSideVector, rCurrentProcessInfo);
+}
+
+void PairedCondition::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const ProcessInfo&) {
+    if (pLhs) pLhs->resize(0, 0);
+    if (pRhs) pRhs->resize(0);
+}
+
+void PairedCondition::EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const {
+    DofsVectorType dofs;
+    GetDofList(dofs, rCurrentProcessInfo);
+    rResult.resize(dofs.size());
+    for (std::size_t i = 0; i < dofs.size(); ++i) rResult[i] = dofs[i]->EquationId();
 }
 
 void PairedCondition::CalculateMassMatrix(Matrix& rMassMatrix, const ProcessInfo&) { rMassMatrix.resize(0, 0); }

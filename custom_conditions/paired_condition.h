@@ -37,6 +37,14 @@ public:
     void InitializeNonLinearIteration(const ProcessInfo& rCurrentProcessInfo) override;
     /// @throws InputError naming the condition id when no master geometry was paired (the .mdpa case)
     int Check(const ProcessInfo& rCurrentProcessInfo) const override;
+    /// The three entry points of the local system are one CalculateConditionSystem each, with the part not asked for
+    /// null: a pair computes its LHS and RHS in one pass (the AD tangent carries the residual).
+    void CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
+                              const ProcessInfo& rCurrentProcessInfo) override;
+    void CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) override;
+    void CalculateRightHandSide(Vector& rRightHandSideVector, const ProcessInfo& rCurrentProcessInfo) override;
+    /// The equation ids of GetDofList, in its order.
+    void EquationIdVector(EquationIdVectorType& rResult, const ProcessInfo& rCurrentProcessInfo) const override;
     /// 0×0: a pair has no inertia.
     void CalculateMassMatrix(Matrix& rMassMatrix, const ProcessInfo& rCurrentProcessInfo) override;
     /// 0×0: a pair has no damping.
@@ -64,6 +72,18 @@ public:
     Geometry::Pointer pGetPairedGeometry() const;
     const Array3& GetPairedNormal() const { return mPairedNormal; }
     void SetPairedNormal(const Array3& normal) { mPairedNormal = normal; }
+
+protected:
+    /// @brief The pair's local system; the default is the empty one of a bare Condition.
+    /// @param[out] pLhs the LHS, sized here (null: not asked for)
+    /// @param[out] pRhs the RHS, sized here (null: not asked for)
+    /// @param[in] rCurrentProcessInfo handed on from the entry point
+    virtual void CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const ProcessInfo& rCurrentProcessInfo);
+    /// "<name> #Id (slave <geometry>, master <geometry or none>)", the Info() of every pair condition.
+    std::string PairInfo(const char* name) const;
+    /// @throws InputError (in the words of @p name) unless the slave and master faces have @p num_slave and
+    ///         @p num_master nodes
+    void CheckNodeCounts(const char* name, int num_slave, int num_master) const;
 
 private:
     void UpdatePairedNormal();

@@ -19,15 +19,6 @@ public:
     using BaseType = MortarContactCondition<TDim, TNumNodes, TFrictional, TNormalVariation, TNumNodesMaster>;
     using BaseType::BaseType;
 
-    void CalculateLocalSystem(Matrix& rLeftHandSideMatrix, Vector& rRightHandSideVector,
-                              const ProcessInfo& rCurrentProcessInfo) override {
-        mCouplingRecord.Clear();
-        BaseType::CalculateLocalSystem(rLeftHandSideMatrix, rRightHandSideVector, rCurrentProcessInfo);
-    }
-    void CalculateLeftHandSide(Matrix& rLeftHandSideMatrix, const ProcessInfo& rCurrentProcessInfo) override {
-        mCouplingRecord.Clear();
-        BaseType::CalculateLeftHandSide(rLeftHandSideMatrix, rCurrentProcessInfo);
-    }
     bool GetNodalGapCoupling(int j, NodalGapCouplingTerms& rTerms) const override {
         return mCouplingRecord.Get(j, rTerms);
     }
@@ -43,6 +34,11 @@ public:
     CouplingRecord* MutableCouplingRecord() const { return &mCouplingRecord; }
 
 protected:
+    /// A tangent evaluation (@p pLhs not null) starts the coupling record afresh.
+    void CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const ProcessInfo& rCurrentProcessInfo) override {
+        if (pLhs) mCouplingRecord.Clear();
+        BaseType::CalculateConditionSystem(pLhs, pRhs, rCurrentProcessInfo);
+    }
     void AfterNormalPass() override { mCouplingRecord.KeepNormalGradients(); }
 
 private:
