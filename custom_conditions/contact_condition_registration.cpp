@@ -12,7 +12,8 @@
 #include "contact_app/kernel/registry.h"
 #include "contact_app/kernel/variables.h"
 #include "custom_conditions/mesh_tying_mortar_condition.h"
-#include "custom_conditions/mortar_contact_families.h"
+#include "custom_conditions/mortar_contact_axisym_condition.h"
+#include "custom_conditions/mortar_contact_family_condition.h"
 #include "custom_conditions/mpc_mortar_contact_condition.h"
 
 namespace contact_app {
@@ -62,15 +63,19 @@ std::shared_ptr<const Condition> ForPair(const PairRow& pair, const TMake& make,
     }
 }
 
-/// The plane prototypes of a family (every pair × NV). @throws InternalError for an axisymmetric row
-template <template <int, int, bool, int> class TFamily>
+/// The plane prototypes of the contact family of friction policy TCase (every pair × NV).
+/// @throws InternalError for an axisymmetric row
+template <FrictionalCase TCase>
 std::shared_ptr<const Condition> MakePlaneFamily(const PairRow& pair, bool nv, bool axisym, Geometry::Pointer s,
                                                  Geometry::Pointer m) {
     CONTACT_CHECK(!axisym, InternalError, "contact condition table: the family has no axisymmetric variant");
     return ForPair(pair, [&](auto pair_traits) -> std::shared_ptr<const Condition> {
         using P = decltype(pair_traits);
-        if (nv) return std::make_shared<const TFamily<P::Dim, P::NumSlave, true, P::NumMaster>>(0, s, nullptr, m);
-        return std::make_shared<const TFamily<P::Dim, P::NumSlave, false, P::NumMaster>>(0, s, nullptr, m);
+        if (nv)
+            return std::make_shared<const MortarContactFamilyCondition<P::Dim, P::NumSlave, TCase, true, P::NumMaster>>(
+                0, s, nullptr, m);
+        return std::make_shared<const MortarContactFamilyCondition<P::Dim, P::NumSlave, TCase, false, P::NumMaster>>(
+            0, s, nullptr, m);
     });
 }
 
@@ -85,31 +90,31 @@ std::shared_ptr<const Condition> MakePairFamily(const PairRow& pair, bool nv, bo
     });
 }
 
-/// The plane prototypes plus the 2D axisymmetric variant TAxisym.
-template <template <int, int, bool, int> class TFamily, template <int, bool> class TAxisym>
+/// The plane prototypes plus the 2D axisymmetric variant (MortarContactAxisymCondition of the 2D2N pair).
+template <FrictionalCase TCase>
 std::shared_ptr<const Condition> MakeFamily(const PairRow& pair, bool nv, bool axisym, Geometry::Pointer s,
                                             Geometry::Pointer m) {
-    if (axisym)
-        return nv ? std::shared_ptr<const Condition>(std::make_shared<const TAxisym<2, true>>(0, s, nullptr, m))
-                  : std::shared_ptr<const Condition>(std::make_shared<const TAxisym<2, false>>(0, s, nullptr, m));
-    return MakePlaneFamily<TFamily>(pair, nv, false, std::move(s), std::move(m));
+    using Axisym = MortarContactAxisymCondition<MortarContactFamilyCondition<2, 2, TCase, false, 2>>;
+    using AxisymNV = MortarContactAxisymCondition<MortarContactFamilyCondition<2, 2, TCase, true, 2>>;
+    if (axisym) {
+        if (nv) return std::make_shared<const AxisymNV>(0, s, nullptr, m);
+        return std::make_shared<const Axisym>(0, s, nullptr, m);
+    }
+    return MakePlaneFamily<TCase>(pair, nv, false, std::move(s), std::move(m));
 }
 
-/// The families, the one place to add one (mortar_contact_families.h names it; its .cpp defines its AddFamilyResidual
-/// and ends with CONTACT_APP_INSTANTIATE_CONTACT_FAMILY).
+/// The families, the one place to add one: the Kratos class of a row is MortarContactFamilyCondition with its policy
+/// (AugmentedLagrangianMethodFrictionlessMortarContactCondition is FRICTIONLESS, ...), whose .cpp
+/// (alm_frictionless_mortar_contact_condition.cpp, ...) defines its AddFamilyResidual and ends with
+/// CONTACT_APP_INSTANTIATE_CONTACT_FAMILY.
 const FamilyRow kFamilies[] = {
-    {"ALM", "Frictionless", FrictionalCase::FRICTIONLESS, true,
-     MakeFamily<AugmentedLagrangianMethodFrictionlessMortarContactCondition,
-                AugmentedLagrangianMethodFrictionlessMortarContactAxisymCondition>},
+    {"ALM", "Frictionless", FrictionalCase::FRICTIONLESS, true, MakeFamily<FrictionalCase::FRICTIONLESS>},
     {"ALM", "FrictionlessComponents", FrictionalCase::FRICTIONLESS_COMPONENTS, false,
-     MakePlaneFamily<AugmentedLagrangianMethodFrictionlessComponentsMortarContactCondition>},
-    {"ALM", "Frictional", FrictionalCase::FRICTIONAL, true,
-     MakeFamily<AugmentedLagrangianMethodFrictionalMortarContactCondition,
-                AugmentedLagrangianMethodFrictionalMortarContactAxisymCondition>},
+     MakePlaneFamily<FrictionalCase::FRICTIONLESS_COMPONENTS>},
+    {"ALM", "Frictional", FrictionalCase::FRICTIONAL, true, MakeFamily<FrictionalCase::FRICTIONAL>},
     {"Penalty", "Frictionless", FrictionalCase::FRICTIONLESS_PENALTY, true,
-     MakeFamily<PenaltyMethodFrictionlessMortarContactCondition, PenaltyMethodFrictionlessMortarContactAxisymCondition>},
-    {"Penalty", "Frictional", FrictionalCase::FRICTIONAL_PENALTY, true,
-     MakeFamily<PenaltyMethodFrictionalMortarContactCondition, PenaltyMethodFrictionalMortarContactAxisymCondition>},
+     MakeFamily<FrictionalCase::FRICTIONLESS_PENALTY>},
+    {"Penalty", "Frictional", FrictionalCase::FRICTIONAL_PENALTY, true, MakeFamily<FrictionalCase::FRICTIONAL_PENALTY>},
     // Non-contact families: MeshTyingMortarCondition<pair> (size of the DISPLACEMENT tying, d(2n_s + n_m)) and
     // MPCMortarContactCondition<pair> (d(n_s + n_m)).
     {"", "MeshTying", FrictionalCase::FRICTIONLESS_COMPONENTS, false, MakePairFamily<MeshTyingMortarCondition>, false,

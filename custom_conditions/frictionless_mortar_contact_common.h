@@ -162,16 +162,24 @@ void RecordNodalGapCoupling(const TState& s, int j, const Eigen::Matrix<double, 
     record.coupled[j] = true;
 }
 
-/// The ALM constants: k = SCALE_FACTOR (ProcessInfo) and the nodal ε_j (positive on the inactive nodes, which
-/// divide by it), δ_j. @throws InputError without SCALE_FACTOR or with a non-positive ε on an inactive node
-template <int TNumNodes>
-std::pair<double, NodalParameters<TNumNodes>> ReadALMParameters(const Geometry& slave, const ProcessInfo& process_info,
-                                                                IndexType id) {
-    CONTACT_CHECK(process_info.Has(SCALE_FACTOR), InputError, "ALM contact condition ", id,
+/// k = SCALE_FACTOR (ProcessInfo) of the ALM pair @p id, which @p what names in the error.
+/// @throws InputError without SCALE_FACTOR
+inline double ReadScaleFactor(const ProcessInfo& process_info, IndexType id, const char* what) {
+    CONTACT_CHECK(process_info.Has(SCALE_FACTOR), InputError, what, " ", id,
                   ": SCALE_FACTOR is not set in the ProcessInfo\n  fix: run the ALM initialisation (ALMFastInit)",
                   " or set ProcessInfo[SCALE_FACTOR]");
-    return {process_info.GetValue(SCALE_FACTOR),
-            ReadNodalParameters<TNumNodes>(slave, id, "ALM", [](bool active) { return !active; })};
+    return process_info.GetValue(SCALE_FACTOR);
+}
+
+/// The ALM constants of a frictionless pair: k = SCALE_FACTOR (ProcessInfo) and the nodal ε_j (positive on the
+/// inactive nodes, which divide by it), δ_j. @throws InputError without SCALE_FACTOR or with a non-positive ε on an
+/// inactive node
+template <int TNumNodes, class TCondition>
+std::pair<double, NodalParameters<TNumNodes>> ReadALMParameters(const TCondition& condition,
+                                                                const ProcessInfo& process_info) {
+    const double k = ReadScaleFactor(process_info, condition.Id(), "ALM contact condition");
+    return {k, ReadNodalParameters<TNumNodes>(condition.GetParentGeometry(), condition.Id(), "ALM",
+                                              [](bool active) { return !active; })};
 }
 
 /// The pair integrated in its current configuration for an explicit pass, and the state the residuals see there.

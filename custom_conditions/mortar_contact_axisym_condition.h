@@ -11,8 +11,9 @@ namespace contact_app {
 /// The 2D axisymmetric variant of a contact family TFamily (its 2D2N pair): the same residual with every Gauss
 /// weight (and, for the Coulomb families, the start-of-step operators and the explicit gap and slip) times
 /// 2π r / THICKNESS, r = x-coordinate of the point (differentiated exactly by the AD tangent);
-/// docs/theory/contact_residuals.md §9. mortar_contact_families.h names it for each family, as the reference does
-/// (`...MortarContactAxisymCondition`); the family's .cpp instantiates it (CONTACT_APP_INSTANTIATE_AXISYM_FAMILY).
+/// docs/theory/contact_residuals.md §9. The condition table builds it from the family's 2D2N pair (the registered
+/// names `...FrictionlessAxisymMortarContactCondition2D2N`, ...); the family's .cpp instantiates it
+/// (CONTACT_APP_INSTANTIATE_AXISYM_FAMILY).
 template <class TFamily>
 class MortarContactAxisymCondition : public TFamily {
 public:

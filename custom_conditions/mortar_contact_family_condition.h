@@ -23,13 +23,15 @@ using MortarContactFamilyBase =
 /// ("previous") mortar operators D_old, M_old of X0 + d(1) with their life cycle and restart state, the objective /
 /// non-objective slip switch recorded in MODIFIED and the frictional checks (frictionless_mortar_contact_common.h,
 /// frictional_mortar_contact_common.h; docs/theory/contact_residuals.md §2, §5, §7), and the DoF list, multiplier
-/// values and multiplier checks, which the policy fixes. A family is this class under its Kratos name
-/// (mortar_contact_families.h) with its residual, an overload
-///   template <int TDim, int TNS, bool TNV, int TNM, class TState, class TVector>
+/// values and multiplier checks, which the policy fixes. A family is this class with its friction policy (the Kratos
+/// class, e.g. AugmentedLagrangianMethodFrictionalMortarContactCondition, is the policy FRICTIONAL) and its residual,
+/// an overload
+///   template <int TDim, int TNS, bool TNV, int TNM, class TState, class T, int TSize>
 ///   void AddFamilyResidual(const MortarContactFamilyCondition<TDim, TNS, FrictionalCase::X, TNV, TNM>& rCondition,
-///                          const TState& state, const ProcessInfo& rCurrentProcessInfo, TVector& rhs);
-/// in namespace contact_app, defined in the family's .cpp, which includes mortar_contact_family_condition_impl.h and
-/// instantiates the class (CONTACT_APP_INSTANTIATE_CONTACT_FAMILY).
+///                          const TState& s, const ProcessInfo& rCurrentProcessInfo, Eigen::Matrix<T, TSize, 1>& rhs);
+/// in namespace contact_app, defined and documented in the family's .cpp (alm_frictional_mortar_contact_condition.cpp,
+/// ...), which includes mortar_contact_family_condition_impl.h and instantiates the class
+/// (CONTACT_APP_INSTANTIATE_CONTACT_FAMILY).
 template <int TDim, int TNumNodes, FrictionalCase TFrictional, bool TNormalVariation, int TNumNodesMaster>
 class MortarContactFamilyCondition
     : public MortarContactFamilyBase<TDim, TNumNodes, TFrictional, TNormalVariation, TNumNodesMaster> {
@@ -94,7 +96,7 @@ protected:
     void InitializeResidual(const MortarOperators<double, TNumNodes, TNumNodesMaster>& operators,
                             const ProcessInfo& rCurrentProcessInfo) override;
     /// The family's residual for the double and the AD scalar alike: the AddFamilyResidual overload of this friction
-    /// policy, defined in the family's .cpp (mortar_contact_families.h), which instantiates the class.
+    /// policy, defined in the family's .cpp, which instantiates the class.
     void AddResidual(const State<double>& state, const ProcessInfo& rCurrentProcessInfo,
                      LocalVector<double>& rhs) const override;
     void AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "custom_conditions/mortar_contact_families.h"
+#include "custom_conditions/mortar_contact_axisym_condition.h"
 #include "custom_conditions/mortar_contact_family_condition_impl.h"
 
 #include <type_traits>
@@ -7,23 +7,51 @@
 namespace contact_app {
 namespace {
 
-using namespace frictional_detail;
+/// TANGENT_SLIP of the slave nodes (zero where never set).
+template <int TDim, int TNS>
+Eigen::Matrix<double, TNS, TDim> ElasticSlips(const Geometry& slave) {
+    Eigen::Matrix<double, TNS, TDim> e;
+    for (int j = 0; j < TNS; ++j) e.row(j) = slave[j].GetValue(TANGENT_SLIP).template head<TDim>().transpose();
+    return e;
+}
 
-/// RHS of docs/theory/contact_residuals.md §7 with B2 fixed, q = [u2 (d·n_m), u1 (d·n_s)]: S_j[δ_j(λ̄_j n_j + τ_j)] on the
-/// active nodes, nothing on the inactive ones, with the nodal penalty pressure λ̄_j = ε_j η_j Ĝ_j (Ĝ the node's
-/// weighted gap over all its pairs, η_j = Σ_c a_c² / A_j²: docs/theory/mortar.md §7 "Nodal penalty"). The tangential
-/// traction is a return map (docs/theory/mortar.md §8) on the elastic slip e_j = TANGENT_SLIP carried over from the
-/// previous steps plus the slip of the step: stick τ = κε(P e_j + s_j), slip τ = −μ λ̄_j t_j along the nodal trial
-/// t = (P e + T̂)/|P e + T̂|, T̂ the transmitted slip Σ_c a^c s^c / A (what the stick rows of all pairs transmit), so
-/// that every pair transmits |τ| = μ |λ̄|. In the AD pass @p record keeps, for the other pairs' tangent blocks
-/// (nodal_gap_coupling.h), b_j = ∂RHS/∂(ηG)_j = S_j[δ ε (n − μ t)] (slip) or S_j[δ ε n] (stick) with this pair's
-/// ∂(ηG)_j/∂q, and at a slipping node B_j = ∂RHS/∂T_j = S_j[−δ μ λ̄ ∂t/∂T] with this pair's ∂T_j/∂q.
-template <class T, int TDim, int TNS, int TNM, class TState, class TVector, class TRecord>
-void AddPenaltyFrictionalResidual(const TState& s, const FrictionalParameters<TDim, TNS>& p,
-                                  const SlipData<TDim, TNS, TNM>& slip, const NodalInterfaceMap<TDim, TNS>& nodal,
-                                  const Eigen::Matrix<double, TNS, TDim>& elastic_slip, TVector& rhs, TRecord* record) {
+}  // namespace
+
+/// Kratos PenaltyMethodFrictionalMortarContactCondition: MortarContactFamilyCondition with FRICTIONAL_PENALTY.
+/// Penalty frictional (Coulomb) mortar contact, displacement DoFs only (docs/theory/contact_residuals.md §7). With the
+/// nodal penalty pressure λ̄_j = ε_j η_j G_j (G_j = Σ_c g̃^c_j over the node's pairs, η_j = Σ_c a_c² / A_j²; the
+/// reference pushes each pair with its own ε g̃^c: docs/theory/mortar.md §7 "Nodal penalty"), an active node adds
+/// S_j[δ_j(λ̄_j n_j + τ_j)], τ_j = −μ_j λ̄_j t_j (SLIP) or κ ε_j s_j (stick), s_j the objective or non-objective
+/// slip of the step (switch on OPERATOR_THRESHOLD recorded in MODIFIED, as the ALM family); inactive nodes add nothing. ε = INITIAL_PENALTY, δ = DYNAMIC_FACTOR,
+/// μ = FRICTION_COEFFICIENT, t = TANGENT_XI (constant), κ = TANGENT_FACTOR. LHS = −∂RHS/∂q by AD. Deviations from
+/// the reference (B2): the tangential traction is spread with D, M like the normal one (the reference weights it
+/// with D − D_old, M − M_old, so it vanishes for small sliding), and the reference always uses the objective slip.
+/// Registers Penalty[NV]FrictionalMortarContactCondition{2D2N,3D3N,3D4N,3D3N4N,3D4N3N}; size d(n_s + n_m).
+/// Its 2D axisymmetric variant MortarContactAxisymCondition<...<2, 2, NV>> weights every Gauss weight (current and
+/// start-of-step operators, explicit gap and slip) by 2π r / THICKNESS; registers
+/// Penalty[NV]FrictionalAxisymMortarContactCondition2D2N.
+/// q = [u2 (d·n_m), u1 (d·n_s)]; ε and κ are read on the active nodes only. The tangential traction is a return map
+/// (docs/theory/mortar.md §8) on the elastic slip e_j = TANGENT_SLIP carried over from the previous steps plus the slip
+/// of the step: stick τ = κε(P e_j + s_j), slip τ = −μ λ̄_j t_j along the nodal trial t = (P e + T̂)/|P e + T̂|, T̂ the
+/// transmitted slip Σ_c a^c s^c / A (what the stick rows of all pairs transmit), so that every pair transmits
+/// |τ| = μ |λ̄|. In the AD pass the coupling record keeps, for the other pairs' tangent blocks (nodal_gap_coupling.h),
+/// b_j = ∂RHS/∂(ηG)_j = S_j[δ ε (n − μ t)] (slip) or S_j[δ ε n] (stick) with this pair's ∂(ηG)_j/∂q, and at a
+/// slipping node B_j = ∂RHS/∂T_j = S_j[−δ μ λ̄ ∂t/∂T] with this pair's ∂T_j/∂q.
+template <int TDim, int TNS, bool TNV, int TNM, class TState, class T, int TSize>
+void AddFamilyResidual(
+    const MortarContactFamilyCondition<TDim, TNS, FrictionalCase::FRICTIONAL_PENALTY, TNV, TNM>& rCondition,
+    const TState& s, const ProcessInfo& rCurrentProcessInfo, Eigen::Matrix<T, TSize, 1>& rhs) {
+    using namespace frictional_detail;
     using Vec = Eigen::Matrix<T, TDim, 1>;
     constexpr bool kDifferentiated = !std::is_same_v<T, double>;
+    const Geometry& slave = rCondition.GetParentGeometry();
+    const auto p = ReadFrictionalParameters<TDim, TNS>(
+        slave, rCurrentProcessInfo, rCondition.Id(), "Penalty", [](bool active) { return active; },
+        [](bool active, bool) { return active; });
+    const auto slip = rCondition.SlipOfStep(AnyActive(p));
+    const auto nodal = MakeNodalInterfaceMap<TDim, TNS>(slave, rCondition.NodalShare(), true);
+    const Eigen::Matrix<double, TNS, TDim> elastic_slip = ElasticSlips<TDim, TNS>(slave);
+    [[maybe_unused]] auto* const record = rCondition.MutableCouplingRecord();
     for (int j = 0; j < TNS; ++j) {
         if (!p.nodal.active[j]) continue;
         const double eps = p.nodal.penalty[j];
@@ -63,37 +91,8 @@ void AddPenaltyFrictionalResidual(const TState& s, const FrictionalParameters<TD
             if (record == nullptr) continue;
             RecordNodalGapCoupling<T, TDim, TNS, TNM>(
                 s, j, Eigen::Matrix<double, TDim, 1>(force_per_pressure * (eps * dynamic_factor)), gap, *record);
-        } else {
-            (void)record;
         }
     }
-}
-
-/// TANGENT_SLIP of the slave nodes (zero where never set).
-template <int TDim, int TNS>
-Eigen::Matrix<double, TNS, TDim> ElasticSlips(const Geometry& slave) {
-    Eigen::Matrix<double, TNS, TDim> e;
-    for (int j = 0; j < TNS; ++j) e.row(j) = slave[j].GetValue(TANGENT_SLIP).template head<TDim>().transpose();
-    return e;
-}
-
-}  // namespace
-
-/// The penalty frictional family's residual (mortar_contact_families.h): ε and κ on the active nodes (the inactive
-/// ones add nothing).
-template <int TDim, int TNS, bool TNV, int TNM, class TState, class TVector>
-void AddFamilyResidual(
-    const MortarContactFamilyCondition<TDim, TNS, FrictionalCase::FRICTIONAL_PENALTY, TNV, TNM>& rCondition,
-    const TState& state, const ProcessInfo& rCurrentProcessInfo, TVector& rhs) {
-    using T = typename TVector::Scalar;
-    const Geometry& slave = rCondition.GetParentGeometry();
-    const auto p = frictional_detail::ReadFrictionalParameters<TDim, TNS>(
-        slave, rCurrentProcessInfo, rCondition.Id(), "Penalty", [](bool active) { return active; },
-        [](bool active, bool) { return active; });
-    const auto slip = rCondition.SlipOfStep(frictional_detail::AnyActive(p));
-    AddPenaltyFrictionalResidual<T, TDim, TNS, TNM>(
-        state, p, slip, MakeNodalInterfaceMap<TDim, TNS>(slave, rCondition.NodalShare(), true),
-        ElasticSlips<TDim, TNS>(slave), rhs, rCondition.MutableCouplingRecord());
 }
 
 CONTACT_APP_INSTANTIATE_CONTACT_FAMILY(FRICTIONAL_PENALTY)
