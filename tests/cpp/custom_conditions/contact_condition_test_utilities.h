@@ -94,6 +94,23 @@ inline void RandomPairCoordinates(const ContactConditionName& row, std::mt19937&
         RandomCoordinates<MortarPairTraits<3, 4, 3>>(rng, false, s, m);
 }
 
+/// A flat slave face (normal +y in 2D, length 1; +z in 3D, the unit square or its half) and the master face matching
+/// it node for node at the distance @p g along the normal.
+inline void FlatMatchingPair(const ContactConditionName& row, double g, Eigen::MatrixXd& s, Eigen::MatrixXd& m) {
+    s.resize(row.num_slave, row.dim);
+    m.resize(row.num_master, row.dim);
+    if (row.dim == 2) {
+        s << 3.0, 0.0, 2.0, 0.0;
+        m << 2.0, g, 3.0, g;
+    } else if (row.num_slave == 3) {
+        s << 0, 0, 0, 1, 0, 0, 0, 1, 0;
+        m << 0, 0, g, 0, 1, g, 1, 0, g;
+    } else {
+        s << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
+        m << 0, 0, g, 0, 1, g, 1, 1, g, 1, 0, g;
+    }
+}
+
 /// max over rows of ‖LHS_i − FD_i‖ / max(‖LHS_i‖, 1e−3·max_k ‖LHS_k‖): every row is measured against its own
 /// size (no entry dominates); rows that vanish analytically (D is diagonal with dual multipliers) are compared
 /// at 1e−3 of the largest row, above the FD round-off.

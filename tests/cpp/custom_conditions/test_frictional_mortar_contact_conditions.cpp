@@ -553,18 +553,8 @@ std::vector<std::string> MatchingFrictionalNames() {
 }
 
 std::shared_ptr<PairedCondition> FlatPair(ContactPairModel& model, const std::string& name, double g) {
-    const auto& row = DecodedName(name);
-    Eigen::MatrixXd s(row.num_slave, row.dim), m(row.num_master, row.dim);
-    if (row.dim == 2) {
-        s << 3.0, 0.0, 2.0, 0.0;  // normal +y
-        m << 2.0, g, 3.0, g;
-    } else if (row.num_slave == 3) {
-        s << 0, 0, 0, 1, 0, 0, 0, 1, 0;
-        m << 0, 0, g, 0, 1, g, 1, 0, g;
-    } else {
-        s << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
-        m << 0, 0, g, 0, 1, g, 1, 1, g, 1, 0, g;
-    }
+    Eigen::MatrixXd s, m;
+    FlatMatchingPair(DecodedName(name), g, s, m);
     return model.MakeNormalPair(name, s, m, 1.0);
 }
 

@@ -211,23 +211,6 @@ std::vector<std::string> MatchingPairRegisteredNames() {
     return names;
 }
 
-/// A flat slave face (normal +y in 2D, length 1; +z in 3D, the unit square or its half) and the master face matching
-/// it node for node at the distance @p g along the normal.
-void FlatMatchingPair(const ContactConditionName& row, double g, Eigen::MatrixXd& s, Eigen::MatrixXd& m) {
-    s.resize(row.num_slave, row.dim);
-    m.resize(row.num_master, row.dim);
-    if (row.dim == 2) {
-        s << 3.0, 0.0, 2.0, 0.0;
-        m << 2.0, g, 3.0, g;
-    } else if (row.num_slave == 3) {
-        s << 0, 0, 0, 1, 0, 0, 0, 1, 0;
-        m << 0, 0, g, 0, 1, g, 1, 0, g;
-    } else {
-        s << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
-        m << 0, 0, g, 0, 1, g, 1, 1, g, 1, 0, g;
-    }
-}
-
 /// ∫N_j over the slave face of FlatMatchingPair: plane faces area/n; axisymmetric line ∫ 2π r / t N_j ds (t = 1).
 double FlatNodalMeasure(const ContactConditionName& row, const Geometry& slave, int j) {
     if (row.axisymmetric) return 2.0 * M_PI * (slave[j].X() / 3.0 + slave[1 - j].X() / 6.0);
