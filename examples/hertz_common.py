@@ -3,8 +3,10 @@
 Mesh grading, gmsh groups, the mirror image of a mesh about x = 0 and the mesh scripts' command
 line, the contact width estimates, E*, loading a folder's script by path and the contact process
 settings, the mesh of a run, the summary's frame, the figures, the command line and the writing of
-the outputs; for the Hertz runners also the run, the result's common fields (``HertzRun``: each
-runner adds its width b or a), the Newton record and the pressure plot. What only the
+the outputs; for the Hertz runners also the example folder (``Example``: mesh script, output names,
+run and command line), the result's common fields (``HertzRun``: each runner adds its width b or
+a, with its errors as ``RelativeError``), the two profiles (``SEMI_ELLIPSE``, ``HALF_ELLIPSOID``),
+the Newton record and the pressure plot. What only the
 Cattaneo-Mindlin runners share is in ``cattaneo_mindlin_common``.
 
 Both examples measure an elliptic pressure profile p(c) = p0 sqrt(1 - c^2/w^2) (c = x in 2D, the
@@ -184,6 +186,28 @@ def second_moment_width(c: np.ndarray, force: np.ndarray, ratio: float) -> float
     return math.sqrt(ratio * float(np.sum(c**2 * force)) / total)
 
 
+@dataclass(frozen=True)
+class EllipticProfile:
+    """The Hertz profile of one dimension: its name and the ratio of its second moment."""
+
+    shape: str  # "semi-ellipse" (2D) or "half-ellipsoid" (3D)
+    moment_ratio: float  # w^2 / (sum(c^2 f) / sum(f))
+
+    def fit(self, c: np.ndarray, p: np.ndarray) -> tuple[float, float]:
+        """(w, p0) of p^2 = p0^2 - (p0/w)^2 c^2 fitted in the least-squares sense."""
+        return fit_elliptic_profile(c, p, self.shape)
+
+    def moment_width(self, c: np.ndarray, force: np.ndarray) -> float:
+        """The width w from the second moment of the nodal forces ``force`` at ``c``."""
+        return second_moment_width(c, force, self.moment_ratio)
+
+
+#: The 2D Hertz profile: sum(x^2 f) / sum(f) = b^2 / 4.
+SEMI_ELLIPSE = EllipticProfile("semi-ellipse", 4.0)
+#: The 3D Hertz profile: sum(r^2 f) / sum(f) = (2/5) a^2.
+HALF_ELLIPSOID = EllipticProfile("half-ellipsoid", 2.5)
+
+
 def effective_modulus(materials: Path) -> float:
     """E* with 1/E* = sum over the bodies of (1 - nu^2)/E, from a Kratos materials file."""
     data = json.loads(Path(materials).read_text(encoding="utf-8"))
@@ -318,6 +342,22 @@ def relative_error(value: float, reference: float) -> float:
     return abs(value - reference) / reference
 
 
+class RelativeError:
+    """A read-only attribute of a result: the relative error of one field against another.
+
+    ``b_error = RelativeError("b", "b_analytic")`` is |b - b_analytic| / b_analytic.
+    """
+
+    def __init__(self, value: str, reference: str) -> None:
+        self.value = value
+        self.reference = reference
+
+    def __get__(self, result: Any, owner: type | None = None) -> Any:
+        if result is None:
+            return self
+        return relative_error(getattr(result, self.value), getattr(result, self.reference))
+
+
 @dataclass(kw_only=True)
 class HertzRun:
     """What a Hertz run measured in both dimensions; each runner adds its width w (b or a)."""
@@ -336,10 +376,7 @@ class HertzRun:
     wall_time: float
     profile: list[tuple[float, float, bool]] = field(default_factory=list)  # (c, p, active)
 
-    @property
-    def p0_error(self) -> float:
-        """Relative error of the peak pressure."""
-        return relative_error(self.p0, self.p0_analytic)
+    p0_error = RelativeError("p0", "p0_analytic")
 
 
 def newton_record(analysis: Any) -> dict[str, Any]:
@@ -500,6 +537,49 @@ def example_main(
     print(text)
     print(f"outputs: {workdir / plot_name}, {workdir / summary_name}, {workdir / 'vtk_output'}")
     return 0 if result.converged else 1
+
+
+class Example:
+    """The folder of a Hertz runner, with the run and the command line every such runner has.
+
+    Its mesh script (``make_mesh``), its output names and its default refinement.
+    """
+
+    def __init__(self, folder: Path, figure: str, default_refinement: int) -> None:
+        self.folder = folder
+        self.make_mesh = mesh_script(folder)
+        self.mesh, self.plot, self.summary = output_names(folder, figure)
+        self.default_refinement = default_refinement
+
+    def run(
+        self,
+        workdir: Path,
+        refinement: int | None,
+        analyse: Callable[[Path], Any],
+        evaluate: Callable[[Any, Path], Any],
+    ) -> Any:
+        """``run_example`` in ``workdir`` with this folder's mesh and inputs."""
+        return run_example(
+            workdir,
+            refinement,
+            self.mesh,
+            self.default_refinement,
+            self.make_mesh.write_mesh,
+            self.folder,
+            analyse,
+            evaluate,
+        )
+
+    def main(
+        self,
+        argv: list[str] | None,
+        doc: str,
+        run: Callable[..., Any],
+        summary: Callable[[Any], str],
+        plot: Callable[[Any, Path], None],
+    ) -> int:
+        """``example_main`` with this folder's output names."""
+        return example_main(argv, doc, run, summary, plot, self.summary, self.plot)
 
 
 #: 2-point Gauss abscissae on [-1, 1].

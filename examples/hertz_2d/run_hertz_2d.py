@@ -35,10 +35,8 @@ HERE = Path(__file__).resolve().parent
 sys.path[:0] = [str(HERE), str(HERE.parent)]
 import hertz_common as common  # noqa: E402  (examples/hertz_common.py)
 
-make_mesh = common.mesh_script(HERE)
-
-MESH, PLOT, SUMMARY = common.output_names(HERE, "pressure")
-DEFAULT_REFINEMENT = 2
+EXAMPLE = common.Example(HERE, "pressure", default_refinement=2)
+make_mesh = EXAMPLE.make_mesh
 
 
 @dataclass(kw_only=True)
@@ -49,25 +47,14 @@ class HertzResult(common.HertzRun):
     b: float  # moment estimate
     b_fit: float
 
-    @property
-    def b_error(self) -> float:
-        """Relative error of the half-width (moment estimate)."""
-        return common.relative_error(self.b, self.b_analytic)
-
-    @property
-    def b_fit_error(self) -> float:
-        """Relative error of the fitted half-width."""
-        return common.relative_error(self.b_fit, self.b_analytic)
+    b_error = common.RelativeError("b", "b_analytic")
+    b_fit_error = common.RelativeError("b_fit", "b_analytic")
 
 
-def fit_semi_ellipse(x: np.ndarray, p: np.ndarray) -> tuple[float, float]:
-    """(b, p0) of p^2 = p0^2 - (p0/b)^2 x^2 fitted in the least-squares sense."""
-    return common.fit_elliptic_profile(x, p, "semi-ellipse")
-
-
-def moment_half_width(x: np.ndarray, force: np.ndarray) -> float:
-    """Half-width from sum(x^2 f) / sum(f) = b^2 / 4 (second moment of the semi-ellipse)."""
-    return common.second_moment_width(x, force, 4.0)
+#: (b, p0) of p^2 = p0^2 - (p0/b)^2 x^2 fitted in the least-squares sense.
+fit_semi_ellipse = common.SEMI_ELLIPSE.fit
+#: Half-width from sum(x^2 f) / sum(f) = b^2 / 4 (second moment of the semi-ellipse).
+moment_half_width = common.SEMI_ELLIPSE.moment_width
 
 
 def evaluate(analysis: ca.analysis.StructuralMechanicsAnalysis, materials: Path) -> HertzResult:
@@ -129,9 +116,7 @@ def run(workdir: Path, refinement: int | None = None, quiet: bool = True) -> Her
         # (the default stops at the first one: docs/running.md "Non-convergence").
         return ca.analysis.run(parameters, quiet=quiet, stop_on_non_convergence=False)
 
-    return common.run_example(
-        workdir, refinement, MESH, DEFAULT_REFINEMENT, make_mesh.write_mesh, HERE, analyse, evaluate
-    )
+    return EXAMPLE.run(workdir, refinement, analyse, evaluate)
 
 
 def summary(result: HertzResult) -> str:
@@ -174,7 +159,7 @@ def plot(result: HertzResult, path: Path) -> None:
 
 def main(argv: list[str] | None = None) -> int:
     """Run, write the plot and the summary, print the summary; 1 if a step did not converge."""
-    return common.example_main(argv, __doc__, run, summary, plot, SUMMARY, PLOT)
+    return EXAMPLE.main(argv, __doc__, run, summary, plot)
 
 
 if __name__ == "__main__":

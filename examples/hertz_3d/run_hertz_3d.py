@@ -36,10 +36,8 @@ HERE = Path(__file__).resolve().parent
 sys.path[:0] = [str(HERE), str(HERE.parent)]
 import hertz_common as common  # noqa: E402  (examples/hertz_common.py)
 
-make_mesh = common.mesh_script(HERE)
-
-MESH, PLOT, SUMMARY = common.output_names(HERE, "pressure")
-DEFAULT_REFINEMENT = 2
+EXAMPLE = common.Example(HERE, "pressure", default_refinement=2)
+make_mesh = EXAMPLE.make_mesh
 
 
 @dataclass(kw_only=True)
@@ -53,30 +51,15 @@ class HertzResult(common.HertzRun):
     p0_fit: float
     contact_force: float  # 4 sum(f) over the active slave nodes
 
-    @property
-    def a_error(self) -> float:
-        """Relative error of the contact radius (moment estimate)."""
-        return common.relative_error(self.a, self.a_analytic)
-
-    @property
-    def a_fit_error(self) -> float:
-        """Relative error of the fitted contact radius."""
-        return common.relative_error(self.a_fit, self.a_analytic)
-
-    @property
-    def p0_fit_error(self) -> float:
-        """Relative error of the fitted peak pressure."""
-        return common.relative_error(self.p0_fit, self.p0_analytic)
+    a_error = common.RelativeError("a", "a_analytic")
+    a_fit_error = common.RelativeError("a_fit", "a_analytic")
+    p0_fit_error = common.RelativeError("p0_fit", "p0_analytic")
 
 
-def fit_half_ellipsoid(r: np.ndarray, p: np.ndarray) -> tuple[float, float]:
-    """(a, p0) of p^2 = p0^2 - (p0/a)^2 r^2 fitted in the least-squares sense."""
-    return common.fit_elliptic_profile(r, p, "half-ellipsoid")
-
-
-def moment_radius(r: np.ndarray, force: np.ndarray) -> float:
-    """Contact radius from sum(r^2 f) / sum(f) = (2/5) a^2, the Hertz pressure's second moment."""
-    return common.second_moment_width(r, force, 2.5)
+#: (a, p0) of p^2 = p0^2 - (p0/a)^2 r^2 fitted in the least-squares sense.
+fit_half_ellipsoid = common.HALF_ELLIPSOID.fit
+#: Contact radius from sum(r^2 f) / sum(f) = (2/5) a^2, the Hertz pressure's second moment.
+moment_radius = common.HALF_ELLIPSOID.moment_width
 
 
 def _reference(node) -> np.ndarray:
@@ -172,9 +155,7 @@ def run(workdir: Path, refinement: int | None = None, quiet: bool = True) -> Her
         analysis.Run()
         return analysis
 
-    return common.run_example(
-        workdir, refinement, MESH, DEFAULT_REFINEMENT, make_mesh.write_mesh, HERE, analyse, evaluate
-    )
+    return EXAMPLE.run(workdir, refinement, analyse, evaluate)
 
 
 def summary(result: HertzResult) -> str:
@@ -225,7 +206,7 @@ def plot(result: HertzResult, path: Path) -> None:
 
 def main(argv: list[str] | None = None) -> int:
     """Run, write the plot and the summary, print the summary; 1 if a step did not converge."""
-    return common.example_main(argv, __doc__, run, summary, plot, SUMMARY, PLOT)
+    return EXAMPLE.main(argv, __doc__, run, summary, plot)
 
 
 if __name__ == "__main__":
