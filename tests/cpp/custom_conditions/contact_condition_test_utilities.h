@@ -4,6 +4,8 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -92,6 +94,90 @@ inline void RandomPairCoordinates(const ContactConditionName& row, std::mt19937&
         RandomCoordinates<MortarPairTraits<3, 3, 4>>(rng, false, s, m);
     else
         RandomCoordinates<MortarPairTraits<3, 4, 3>>(rng, false, s, m);
+}
+
+/// Whether the registered condition @p row is of a penalty family (displacement DoFs only).
+inline bool IsPenalty(const ContactConditionName& row) { return row.family.rfind("Penalty", 0) == 0; }
+
+/// Local unknown of a pair: (node, variable) in the order [master u, slave u, λ].
+struct LocalDof {
+    Node* node;
+    int component;  ///< 0..2 displacement, −1 scalar multiplier, kVectorMultiplier + c vector multiplier
+};
+constexpr int kVectorMultiplier = 10;
+
+/// DISPLACEMENT_c, LAGRANGE_MULTIPLIER_CONTACT_PRESSURE or VECTOR_LAGRANGE_MULTIPLIER_c of @p dof.
+inline const Variable<double>& DofVariable(const LocalDof& dof) {
+    static const std::array<const Variable<double>*, 3> u = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
+    static const std::array<const Variable<double>*, 3> l = {&VECTOR_LAGRANGE_MULTIPLIER_X,
+                                                             &VECTOR_LAGRANGE_MULTIPLIER_Y,
+                                                             &VECTOR_LAGRANGE_MULTIPLIER_Z};
+    if (dof.component < 0) return LAGRANGE_MULTIPLIER_CONTACT_PRESSURE;
+    return dof.component >= kVectorMultiplier ? *l[dof.component - kVectorMultiplier] : *u[dof.component];
+}
+
+/// The local unknowns of @p pair as the spec orders them: master u, slave u, then no λ (penalty), one scalar λ per
+/// slave node (ALM frictionless) or d components of VECTOR_LAGRANGE_MULTIPLIER per slave node (ALM frictionless
+/// components, ALM frictional).
+inline std::vector<LocalDof> LocalDofs(PairedCondition& pair, const ContactConditionName& row) {
+    const int dim = row.dim;
+    std::vector<LocalDof> dofs;
+    auto& master = const_cast<Geometry&>(pair.GetPairedGeometry());
+    auto& slave = const_cast<Geometry&>(pair.GetParentGeometry());
+    for (std::size_t l = 0; l < master.size(); ++l)
+        for (int c = 0; c < dim; ++c) dofs.push_back({&master[l], c});
+    for (std::size_t j = 0; j < slave.size(); ++j)
+        for (int c = 0; c < dim; ++c) dofs.push_back({&slave[j], c});
+    if (row.family == "ALMFrictionlessComponents" || row.family == "ALMFrictional")
+        for (std::size_t j = 0; j < slave.size(); ++j)
+            for (int c = 0; c < dim; ++c) dofs.push_back({&slave[j], kVectorMultiplier + c});
+    else if (!IsPenalty(row))
+        for (std::size_t j = 0; j < slave.size(); ++j) dofs.push_back({&slave[j], -1});
+    return dofs;
+}
+
+/// Moves a displacement DoF (current coordinates and DISPLACEMENT(0), not the start-of-step d(1)) or a multiplier
+/// by @p h.
+inline void Perturb(const LocalDof& dof, double h) {
+    if (dof.component < 0) {
+        dof.node->FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE) += h;
+    } else if (dof.component >= kVectorMultiplier) {
+        dof.node->FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER)[dof.component - kVectorMultiplier] += h;
+    } else {
+        dof.node->Coordinates()[dof.component] += h;
+        dof.node->FastGetSolutionStepValue(DISPLACEMENT)[dof.component] += h;
+    }
+}
+
+/// Checks what docs/registered_conditions.md §2 says of the registered pair @p name: its MatrixSize, the sizes of
+/// the local system of @p pair, and its DoF list and equation ids in the order of LocalDofs.
+inline void ExpectSpecLocalSystem(PairedCondition& pair, const std::string& name, const ProcessInfo& info) {
+    static const std::map<std::string, std::map<std::string, int>> spec_sizes = {
+        {"ALMFrictionless", {{"2D2N", 10}, {"3D3N", 21}, {"3D4N", 28}, {"3D3N4N", 24}, {"3D4N3N", 25}}},
+        {"ALMFrictionlessComponents", {{"2D2N", 12}, {"3D3N", 27}, {"3D4N", 36}, {"3D3N4N", 30}, {"3D4N3N", 33}}},
+        {"ALMFrictional", {{"2D2N", 12}, {"3D3N", 27}, {"3D4N", 36}, {"3D3N4N", 30}, {"3D4N3N", 33}}},
+        {"PenaltyFrictionless", {{"2D2N", 8}, {"3D3N", 18}, {"3D4N", 24}, {"3D3N4N", 21}, {"3D4N3N", 21}}},
+        {"PenaltyFrictional", {{"2D2N", 8}, {"3D3N", 18}, {"3D4N", 24}, {"3D3N4N", 21}, {"3D4N3N", 21}}}};
+    const auto& row = DecodedName(name);
+    const std::string suffix = name.substr(name.find("Condition") + 9);
+    EXPECT_EQ(row.matrix_size, spec_sizes.at(row.family).at(suffix));
+    Matrix lhs;
+    Vector rhs;
+    pair.CalculateLocalSystem(lhs, rhs, info);
+    EXPECT_EQ(lhs.rows(), row.matrix_size);
+    EXPECT_EQ(lhs.cols(), row.matrix_size);
+    EXPECT_EQ(rhs.size(), row.matrix_size);
+    DofsVectorType dofs;
+    EquationIdVectorType ids;
+    pair.GetDofList(dofs, info);
+    pair.EquationIdVector(ids, info);
+    ASSERT_EQ(static_cast<int>(dofs.size()), row.matrix_size);
+    ASSERT_EQ(static_cast<int>(ids.size()), row.matrix_size);
+    const auto expected = LocalDofs(pair, row);
+    for (int q = 0; q < row.matrix_size; ++q) {
+        EXPECT_EQ(dofs[q]->Id(), expected[q].node->Id()) << q;
+        EXPECT_EQ(&dofs[q]->GetVariable(), static_cast<const VariableData*>(&DofVariable(expected[q]))) << q;
+    }
 }
 
 /// A flat slave face (normal +y in 2D, length 1; +z in 3D, the unit square or its half) and the master face matching

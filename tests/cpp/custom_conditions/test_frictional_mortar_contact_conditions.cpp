@@ -18,10 +18,6 @@
 namespace contact_app::testing {
 namespace {
 
-bool IsPenalty(const ContactConditionName& row) {
-    return row.family == "PenaltyFrictional";
-}
-
 std::vector<std::string> FrictionalNames() {
     std::vector<std::string> names;
     for (const auto& row : RegisteredContactConditionNames())
@@ -36,45 +32,6 @@ struct FrictionalModel : ContactPairModel {
         part->SetBufferSize(2);
     }
 };
-
-struct LocalDof {
-    Node* node;
-    int component;  ///< 0..2 displacement, 10 + c VECTOR_LAGRANGE_MULTIPLIER_c
-};
-
-std::vector<LocalDof> LocalDofs(PairedCondition& pair, const ContactConditionName& row) {
-    std::vector<LocalDof> dofs;
-    auto& master = const_cast<Geometry&>(pair.GetPairedGeometry());
-    auto& slave = const_cast<Geometry&>(pair.GetParentGeometry());
-    for (std::size_t l = 0; l < master.size(); ++l)
-        for (int c = 0; c < row.dim; ++c) dofs.push_back({&master[l], c});
-    for (std::size_t j = 0; j < slave.size(); ++j)
-        for (int c = 0; c < row.dim; ++c) dofs.push_back({&slave[j], c});
-    if (!IsPenalty(row))
-        for (std::size_t j = 0; j < slave.size(); ++j)
-            for (int c = 0; c < row.dim; ++c) dofs.push_back({&slave[j], 10 + c});
-    return dofs;
-}
-
-const Variable<double>& DofVariable(const LocalDof& dof) {
-    static const std::array<const Variable<double>*, 6> v = {&DISPLACEMENT_X,
-                                                             &DISPLACEMENT_Y,
-                                                             &DISPLACEMENT_Z,
-                                                             &VECTOR_LAGRANGE_MULTIPLIER_X,
-                                                             &VECTOR_LAGRANGE_MULTIPLIER_Y,
-                                                             &VECTOR_LAGRANGE_MULTIPLIER_Z};
-    return *v[dof.component >= 10 ? 3 + dof.component - 10 : dof.component];
-}
-
-/// Moves a displacement DoF (current coordinates and DISPLACEMENT(0), not the start-of-step d(1)) or a multiplier.
-void Perturb(const LocalDof& dof, double h) {
-    if (dof.component >= 10) {
-        dof.node->FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER)[dof.component - 10] += h;
-    } else {
-        dof.node->Coordinates()[dof.component] += h;
-        dof.node->FastGetSolutionStepValue(DISPLACEMENT)[dof.component] += h;
-    }
-}
 
 /// Moves every node to X0 + d(0) with the step start at X0 + d(1): d(1) random (0.02), d(0) = d(1) + a random
 /// perturbation (0.01) + @p slide on the master nodes.
@@ -150,15 +107,6 @@ SlidingPair MakeSlidingPair(FrictionalModel& model, const std::string& name, std
     return result;
 }
 
-/// MatrixSize per family and pair (docs/registered_conditions.md §2).
-const std::map<std::string, std::map<std::string, int>> kSpecSizes = {
-    {"ALMFrictional", {{"2D2N", 12}, {"3D3N", 27}, {"3D4N", 36}, {"3D3N4N", 30}, {"3D4N3N", 33}}},
-    {"PenaltyFrictional", {{"2D2N", 8}, {"3D3N", 18}, {"3D4N", 24}, {"3D3N4N", 21}, {"3D4N3N", 21}}}};
-
-std::string Suffix(const std::string& name) {
-    return name.substr(name.find("Condition") + 9);
-}
-
 bool HasValidNodalShare(const Condition& c) {
     return WithMortarBase(&c, [](const auto& p) { return p.NodalShare().valid ? 1 : 0; }) == 1;
 }
@@ -227,24 +175,7 @@ TEST_P(FrictionalMortarNames, LocalSystemSizesDofOrderAndStateEncodingMatchTheSp
     std::mt19937 rng(7);
     auto sliding = MakeSlidingPair(model, GetParam(), rng, {2}, 1e-3);
     auto& pair = *sliding.pair;
-    Matrix lhs;
-    Vector rhs;
-    pair.CalculateLocalSystem(lhs, rhs, sliding.info);
-    EXPECT_EQ(row.matrix_size, kSpecSizes.at(row.family).at(Suffix(GetParam())));
-    EXPECT_EQ(lhs.rows(), row.matrix_size);
-    EXPECT_EQ(lhs.cols(), row.matrix_size);
-    EXPECT_EQ(rhs.size(), row.matrix_size);
-    DofsVectorType dofs;
-    EquationIdVectorType ids;
-    pair.GetDofList(dofs, sliding.info);
-    pair.EquationIdVector(ids, sliding.info);
-    ASSERT_EQ(static_cast<int>(dofs.size()), row.matrix_size);
-    ASSERT_EQ(static_cast<int>(ids.size()), row.matrix_size);
-    const auto expected = LocalDofs(pair, row);
-    for (int q = 0; q < row.matrix_size; ++q) {
-        EXPECT_EQ(dofs[q]->Id(), expected[q].node->Id()) << q;
-        EXPECT_EQ(&dofs[q]->GetVariable(), static_cast<const VariableData*>(&DofVariable(expected[q]))) << q;
-    }
+    ExpectSpecLocalSystem(pair, GetParam(), sliding.info);
     // Σ s_i 3^i for every combination of states of the slave nodes.
     auto& slave = const_cast<Geometry&>(pair.GetParentGeometry());
     const int n = static_cast<int>(slave.size());
