@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_conditions/mpc_mortar_contact_condition.h"
 
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <utility>
 
@@ -221,12 +219,6 @@ MPCConstraintRelation MPC_CLASS::ComputeConstraintRelation(const ProcessInfo& rC
                     if (std::abs(Q(i, j)) > 1.0e-12)
                         for (int a = 0; a < TDim; ++a) result.relation(i * TDim + a, j * TDim + a) = weight * Q(i, j);
             for (int a = 0; a < TDim; ++a) result.constant[i * TDim + a] = normal_constant * n[a];
-            if (active && Is(SLIP) && std::getenv("MPC_INCREMENTAL_STICK")) {
-                const Eigen::Matrix<double, TDim, 1> offset = relative - n.dot(relative) * n;
-                for (int a = 0; a < TDim; ++a) result.constant[i * TDim + a] += weight * offset[a];
-                if (std::getenv("MPC_DEBUG") && offset.norm() > 0.0)
-                    std::fprintf(stderr, "offset node %d |offset| %g weight %g prev %g\n", int(node.Id()), offset.norm(), weight, PreviousDisplacement<TDim>(node).norm());
-            }
             continue;
         }
         // Normal only: the one scalar row n·u_s = n·(Q u_m) + c, solved for the component a* with the largest |n_a|;
