@@ -96,6 +96,14 @@ inline void RandomPairCoordinates(const ContactConditionName& row, std::mt19937&
         RandomCoordinates<MortarPairTraits<3, 4, 3>>(rng, false, s, m);
 }
 
+/// The registered names of the two Coulomb families (ALM frictional, penalty frictional).
+inline std::vector<std::string> FrictionalNames() {
+    std::vector<std::string> names;
+    for (const auto& row : RegisteredContactConditionNames())
+        if (row.family == "ALMFrictional" || row.family == "PenaltyFrictional") names.push_back(row.name);
+    return names;
+}
+
 /// Whether the registered condition @p row is of a penalty family (displacement DoFs only).
 inline bool IsPenalty(const ContactConditionName& row) { return row.family.rfind("Penalty", 0) == 0; }
 

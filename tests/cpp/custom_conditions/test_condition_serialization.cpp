@@ -9,13 +9,6 @@
 namespace contact_app::testing {
 namespace {
 
-std::vector<std::string> FrictionalNames() {
-    std::vector<std::string> names;
-    for (const auto& row : RegisteredContactConditionNames())
-        if (row.family == "ALMFrictional" || row.family == "PenaltyFrictional") names.push_back(row.name);
-    return names;
-}
-
 /// A pair after InitializeSolutionStep in a step where the master slid along the slave, every slave node stick
 /// (the slip measure, hence the start-of-step operators, enter the residual).
 struct SlidingStep {

@@ -18,13 +18,6 @@
 namespace contact_app::testing {
 namespace {
 
-std::vector<std::string> FrictionalNames() {
-    std::vector<std::string> names;
-    for (const auto& row : RegisteredContactConditionNames())
-        if (row.family == "ALMFrictional" || row.family == "PenaltyFrictional") names.push_back(row.name);
-    return names;
-}
-
 /// The contact model of the fixtures plus WEIGHTED_SLIP and a buffer of 2 (start-of-step displacement).
 struct FrictionalModel : ContactPairModel {
     FrictionalModel() {
