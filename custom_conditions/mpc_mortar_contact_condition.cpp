@@ -22,11 +22,12 @@ const Variable<double>* const kDisplacementComponents[] = {&DISPLACEMENT_X, &DIS
 /// Kratos IsActive(): a node whose ACTIVE flag was never set counts as active.
 bool IsActiveNode(const Node& node) { return node.IsNotDefined(ACTIVE) || node.Is(ACTIVE); }
 
-/// Historical DISPLACEMENT at buffer 1 (the previous converged step), 0 with a one-step buffer.
+/// Historical DISPLACEMENT at buffer @p index (0: the current iterate, 1: the previous converged step); 0 for a buffer
+/// the node does not keep.
 template <int TDim>
-Eigen::Matrix<double, TDim, 1> PreviousDisplacement(const Node& node) {
-    if (node.GetBufferSize() < 2) return Eigen::Matrix<double, TDim, 1>::Zero();
-    return node.FastGetSolutionStepValue(DISPLACEMENT, 1).head<TDim>();
+Eigen::Matrix<double, TDim, 1> DisplacementAt(const Node& node, std::size_t index) {
+    if (node.GetBufferSize() <= index) return Eigen::Matrix<double, TDim, 1>::Zero();
+    return node.FastGetSolutionStepValue(DISPLACEMENT, index).head<TDim>();
 }
 
 /// This pair's share of slave node @p i: a_i / A_i with a_i = Σ_k D_ik = ∫N_i over the pair's overlap and A_i =
@@ -180,8 +181,15 @@ MPCConstraintRelation MPC_CLASS::ComputeConstraintRelation(const ProcessInfo& rC
     const Geometry& slave = GetParentGeometry();
     const Geometry& master = GetPairedGeometry();
     const auto normals = NodalNormals<TDim, TNS>(slave);
-    Eigen::Matrix<double, TNM, TDim> u2_previous;  // B7 done right: n_m master rows
-    for (int j = 0; j < TNM; ++j) u2_previous.row(j) = PreviousDisplacement<TDim>(master[j]).transpose();
+    // WEIGHTED_GAP is the gap of the configuration the constraint is built at: the start of the step for the step's
+    // first build (buffer 1), the current iterate for a rebuild inside the step (INTERACTION; the criteria computed
+    // the gaps of the iterate). A stick row keeps the tangential offset of the start of the step in either case.
+    const std::size_t gap_buffer = Is(INTERACTION) ? 0 : 1;
+    Eigen::Matrix<double, TNM, TDim> u2_gap, u2_previous;  // B7 done right: n_m master rows
+    for (int j = 0; j < TNM; ++j) {
+        u2_gap.row(j) = DisplacementAt<TDim>(master[j], gap_buffer).transpose();
+        u2_previous.row(j) = DisplacementAt<TDim>(master[j], 1).transpose();
+    }
 
     struct SlipRow {
         int node, row;
@@ -204,11 +212,11 @@ MPCConstraintRelation MPC_CLASS::ComputeConstraintRelation(const ProcessInfo& rC
                       "\n  fix: compute the nodal weights (the MPC contact strategy does) before updating the constraint");
         const double weight = paux > 0.0 ? PairShare(node, operators, i) : 0.0;
         const Eigen::Matrix<double, TDim, 1> n = normals.row(i).transpose();
-        // Gap carried by the constant: closing it needs n·(Δu1 − Q Δu2) = g̃/A from the previous displacements.
+        // Gap carried by the constant: closing it needs n·(Δu1 − Q Δu2) = g̃/A from the displacements of the gap.
         const double area = node.Has(NODAL_AREA) && node.GetValue(NODAL_AREA) > 0.0 ? node.GetValue(NODAL_AREA) : 1.0;
         const double gap = node.FastGetSolutionStepValue(WEIGHTED_GAP);
         const Eigen::Matrix<double, TDim, 1> relative =
-            PreviousDisplacement<TDim>(node) - (Q.row(i) * u2_previous).transpose();
+            DisplacementAt<TDim>(node, gap_buffer) - (Q.row(i) * u2_gap).transpose();
         const double normal_constant = weight * (gap / area + n.dot(relative));
         // SLIP condition: slip nodes normal-only, stick nodes full; RIGID (tying): full; else frictionless.
         const bool normal_only = Is(SLIP) ? node.Is(SLIP) : !Is(RIGID);
@@ -219,6 +227,15 @@ MPCConstraintRelation MPC_CLASS::ComputeConstraintRelation(const ProcessInfo& rC
                     if (std::abs(Q(i, j)) > 1.0e-12)
                         for (int a = 0; a < TDim; ++a) result.relation(i * TDim + a, j * TDim + a) = weight * Q(i, j);
             for (int a = 0; a < TDim; ++a) result.constant[i * TDim + a] = normal_constant * n[a];
+            if (active && Is(SLIP)) {
+                // Stick is no slip in the step (as the ALM stick rows, docs/theory/mortar.md §9): P(u_s − Q u_m) keeps
+                // its start-of-step value. Tying it to zero instead pulled a node back over the tangential motion it
+                // made before it touched (a stick force above the cone on every newly touching node).
+                Eigen::Matrix<double, TDim, 1> offset =
+                    DisplacementAt<TDim>(node, 1) - (Q.row(i) * u2_previous).transpose();
+                offset -= n.dot(offset) * n;
+                for (int a = 0; a < TDim; ++a) result.constant[i * TDim + a] += weight * offset[a];
+            }
             continue;
         }
         // Normal only: the one scalar row n·u_s = n·(Q u_m) + c, solved for the component a* with the largest |n_a|;

@@ -30,9 +30,11 @@ struct MPCConstraintRelation {
 /// Initialize, InitializeSolutionStep (unless BLOCKED) and InitializeNonLinearIteration (only if the condition
 /// Is(INTERACTION)): frictionless (normal-only: one scalar row n·u_s = n·(Q u_m) + c per node, solved for the
 /// component with the largest |n_a|, the other slave components stay free), frictional (SLIP condition: slip nodes
-/// normal-only, stick nodes full Q) or tying (RIGID condition: full Q), each row weighted by 1/NODAL_PAUX, then the
-/// rows and columns with an absolute sum ≤ 1e−12 are pruned and the constraint DoF lists reset to the surviving ones
-/// (docs/theory/mortar.md §9).
+/// normal-only, stick nodes full Q) or tying (RIGID condition: full Q), each row weighted by the pair's share a_i/A_i
+/// of the node, then the rows and columns with an absolute sum ≤ 1e−12 are pruned and the constraint DoF lists reset
+/// to the surviving ones.
+/// c closes WEIGHTED_GAP from the displacement it was computed at (the start of the step; the current iterate in a
+/// rebuild, INTERACTION) and, on stick rows, keeps the start-of-step tangential offset (docs/theory/mortar.md §9).
 /// Registers MPCMortarContactCondition{2D2N,3D3N,3D4N,3D3N4N,3D4N3N}; local system [master u, slave u].
 template <int TDim, int TNumNodes, int TNumNodesMaster = TNumNodes>
 class MPCMortarContactCondition : public PairedCondition {

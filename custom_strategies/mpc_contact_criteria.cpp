@@ -117,7 +117,8 @@ bool MPCContactCriteria::PostCriteria(ModelPart& rModelPart, DofsArrayType&, con
 
     const double factor = info.Has(REACTION_CHECK_STIFFNESS_FACTOR) ? info.GetValue(REACTION_CHECK_STIFFNESS_FACTOR)
                                                                     : kDefaultReactionCheckFactor;
-    const double tolerance_pressure = -factor * YoungModulus(rModelPart);
+    const double young = YoungModulus(rModelPart);
+    const double tolerance_pressure = -factor * young;
     const bool frictional = contact->Is(SLIP) || (computing != nullptr && computing->Is(SLIP));
     for (const auto& node : contact->Nodes()) {
         if (!node->Is(SLAVE)) continue;
@@ -138,7 +139,13 @@ bool MPCContactCriteria::PostCriteria(ModelPart& rModelPart, DofsArrayType&, con
         const double gap = node->FastGetSolutionStepValue(WEIGHTED_GAP) / area;
         const double nodal_h = ContactUtilities::NodalH(*node);
         const double length = nodal_h > 0.0 ? nodal_h : std::sqrt(lumped_area);
-        const bool active = pressure < tolerance_pressure || gap < -kGapTolerance * length;
+        // The active set on p̄ = p + (E/h) g̃/A, the ALM's augmented pressure with the penalty E/h: an inactive node
+        // (p = 0) is activated by a penetration, an active one, whose gap the constraint keeps closed up to the drift
+        // of the iterate since the last rebuild, is released by tension (a union of the two tests kept an edge node
+        // active in tension over a 1e-8 drift, docs/theory/active_set.md §4). Without a Young's modulus, the gap alone.
+        const bool penetrating = gap < -kGapTolerance * length;
+        const bool active = young > 0.0 ? pressure + (penetrating ? young / length * gap : 0.0) < tolerance_pressure
+                                        : pressure < tolerance_pressure || penetrating;
         if (active != was_active || node->IsNotDefined(ACTIVE)) {
             if (active != was_active) ++mActiveFlips;
             node->Set(ACTIVE, active);

@@ -63,31 +63,13 @@ void ResidualBasedNewtonRaphsonMPCContactStrategy::RefreshConstraints() {
     ModelPart* computing = ContactUtilities::FindContactPart(mModelPart, "ComputingContact");
     if (computing == nullptr) return;
     const ProcessInfo& info = mModelPart.GetProcessInfo();
-    // The pair writes c = w (g̃/A + n·(u₁ − Q u₂)) with u at buffer 1, which is consistent with g̃ only when g̃ was
-    // computed at the configuration of that buffer (the start of the step). Here g̃ is the current gap, so the
-    // current displacement stands in buffer 1 while the pairs rebuild, then the history is restored.
-    std::vector<std::pair<Node*, Array3>> saved;
-    const bool swap = mModelPart.GetRootModelPart().GetBufferSize() > 1 &&
-                      mModelPart.GetRootModelPart().HasNodalSolutionStepVariable(DISPLACEMENT);
-    for (const auto& condition : computing->Conditions()) {
-        const auto* pair = dynamic_cast<const PairedCondition*>(condition.get());
-        if (!swap || pair == nullptr || !pair->HasPairedGeometry()) continue;
-        const Geometry* faces[2] = {&pair->GetParentGeometry(), &pair->GetPairedGeometry()};
-        for (const Geometry* face : faces)
-            for (std::size_t i = 0; i < face->size(); ++i) {
-                Node& node = const_cast<Node&>((*face)[i]);
-                saved.emplace_back(&node, node.FastGetSolutionStepValue(DISPLACEMENT, 1));
-                node.FastGetSolutionStepValue(DISPLACEMENT, 1) = node.FastGetSolutionStepValue(DISPLACEMENT);
-            }
-    }
+    // INTERACTION tells each pair that its gaps are those of the current iterate (the criteria computed them), so it
+    // builds the normal constant at the current displacement (MPCMortarContactCondition::ComputeConstraintRelation).
     for (const auto& condition : computing->Conditions()) {
         condition->Set(INTERACTION, true);
         condition->InitializeNonLinearIteration(info);
         condition->Set(INTERACTION, false);
     }
-    // Restore in reverse order: a node shared by several pairs gets its first saved (true) value back last.
-    for (auto it = saved.rbegin(); it != saved.rend(); ++it)
-        it->first->FastGetSolutionStepValue(DISPLACEMENT, 1) = it->second;
 }
 
 void ResidualBasedNewtonRaphsonMPCContactStrategy::PredictUnknowns() { mScheme->PredictPrescribed(mModelPart); }

@@ -64,8 +64,8 @@ private:
     /// One Newton loop as described above. @return the criterion's verdict.
     bool NewtonLoop();
     void ComputeExplicitContributions();
-    /// Every pair of "ComputingContact" rebuilds its constraint at the current configuration (gap, operators and
-    /// constant referred to the current displacement).
+    /// Every pair of "ComputingContact" rebuilds its constraint at the current configuration, flagged INTERACTION so
+    /// that it refers the gap part of its constant to the current displacement.
     void RefreshConstraints();
 
     MPCContactStrategySettings mMPCSettings;

@@ -267,6 +267,65 @@ TEST(MPCMortarContactCondition, ConstantVectorCarriesTheGapAndThePreviousDisplac
     }
 }
 
+TEST(MPCMortarContactCondition, StickRowsKeepTheStartOfStepTangentialOffsetAndARebuildTakesTheCurrentGap) {
+    // A sticking node does not slip in the step: P(u_s − Q u_m) keeps its start-of-step value (buffer 1), whatever
+    // the node did before (a node that touches in this step carries its earlier tangential motion). The normal part
+    // closes the gap WEIGHTED_GAP from the displacement it was computed at: buffer 1 for the step's first build, the
+    // current iterate for a rebuild inside the step (INTERACTION). Before: the stick rows tied P(u_s − Q u_m) to 0.
+    for (const auto& suffix : kMatchingSuffixes) {
+        const PairKind& kind = Kind(suffix);
+        for (const bool rebuild : {false, true}) {
+            MPCPair p(kind);
+            p.pair->Set(SLIP, true);
+            p.pair->Set(INTERACTION, rebuild);
+            std::mt19937 rng(13);
+            std::uniform_real_distribution<double> u(-1.0, 1.0);
+            const int d = kind.dim, ns = kind.num_slave;
+            auto random = [&] { return Array3(u(rng), u(rng), d == 3 ? u(rng) : 0.0); };
+            // The current displacement is one translation of both faces (the pair's current geometry, Q and normals
+            // stay those of the matching pair): u_s − Q u_m = 0 now, random at the start of the step.
+            const Array3 translation = random();
+            for (int i = 0; i < ns; ++i) {
+                p.Slave()[i].FastGetSolutionStepValue(WEIGHTED_GAP) = 0.1 * u(rng);
+                p.Slave()[i].SetValue(NODAL_AREA, 0.3 + 0.1 * u(rng));
+                for (Node* node : {&p.Slave()[i], &p.Master()[i]}) {
+                    node->FastGetSolutionStepValue(DISPLACEMENT, 1) = random();
+                    node->FastGetSolutionStepValue(DISPLACEMENT) = translation;
+                }
+            }
+            p.Slave()[0].Set(SLIP, true);  // normal-only: no tangential offset
+            const auto relation = p.Relation();
+            const Eigen::MatrixXd Q = MatchingQ(ns);
+            auto relative = [&](int i, int buffer) {
+                Eigen::VectorXd r = p.Slave()[i].FastGetSolutionStepValue(DISPLACEMENT, buffer).head(d);
+                for (int j = 0; j < ns; ++j)
+                    r -= Q(i, j) * p.Master()[j].FastGetSolutionStepValue(DISPLACEMENT, buffer).head(d);
+                return r;
+            };
+            for (int i = 1; i < ns; ++i) {
+                const Eigen::VectorXd n = p.Normal(i);
+                const double area = p.Slave()[i].GetValue(NODAL_AREA);
+                const double share = std::abs(p.Slave().DomainSize()) / ns / area;
+                const double gap = p.Slave()[i].FastGetSolutionStepValue(WEIGHTED_GAP) / area;
+                const Eigen::VectorXd previous = relative(i, 1);
+                const Eigen::VectorXd expected =
+                    share * ((gap + n.dot(relative(i, rebuild ? 0 : 1))) * n + previous - n.dot(previous) * n);
+                EXPECT_LT((relation.constant.segment(i * d, d) - expected).norm(), 1e-12)
+                    << suffix << " rebuild " << rebuild << " node " << i;
+            }
+            // The slipping node's single row carries the normal part only.
+            const Eigen::VectorXd n0 = p.Normal(0);
+            const double area0 = p.Slave()[0].GetValue(NODAL_AREA);
+            const double normal0 = std::abs(p.Slave().DomainSize()) / ns / area0 *
+                                   (p.Slave()[0].FastGetSolutionStepValue(WEIGHTED_GAP) / area0 +
+                                    n0.dot(relative(0, rebuild ? 0 : 1)));
+            Eigen::Index pivot = 0;
+            n0.cwiseAbs().maxCoeff(&pivot);
+            EXPECT_NEAR(relation.constant[pivot], normal0 / n0[pivot], 1e-12) << suffix;
+        }
+    }
+}
+
 TEST(MPCMortarContactCondition, PruningSetsTheConstraintDofListsAndReducedSystem) {
     MPCPair p(Kind("2D2N"));
     p.Slave()[0].FastGetSolutionStepValue(WEIGHTED_GAP) = 0.02;
