@@ -5,8 +5,8 @@
 /// over all its pairs and η_j = Σ_d (a^d_j)² / (Σ_d a^d_j)² (both differentiated), so its residual depends on
 /// the unknowns of every other pair d of the node:
 ///   ∂RHS^c/∂q_d = b^c_j (∂X_j/∂q_d)ᵀ,   b^c_j = ∂RHS^c/∂X_j.
-/// A slipping node of the frictional family also takes its direction from the transmitted slip
-/// T_j = Σ_d a^d_j s^d_j / A_j (A_j = NODAL_AREA = Σ_d a^d_j differentiated too), which adds
+/// An active node of the frictional family also reads the transmitted slip T_j = Σ_d a^d_j s^d_j / A_j (A_j = NODAL_AREA
+/// = Σ_d a^d_j differentiated too; the stick traction κε(e + T_j), the slip direction of the trial), which adds
 ///   ∂RHS^c/∂q_d = B^c_j ∂T_j/∂q_d,   B^c_j = ∂RHS^c/∂T_j (n_dof × d),   ∂T_j/∂q_d = (∂(a^d_j s^d_j) − T_j ∂a^d_j)/∂q_d / A_j.
 /// The pair's own local tangent holds the d = c blocks; NodalPenaltyCoupling (custom_strategies/) adds the others.
 /// When the nodal normals follow the iterate (nodal_normal_coupling.h) g̃^d_j and s^d_j also move with the normals n_m of
@@ -20,17 +20,17 @@
 
 namespace contact_app {
 
-/// b^c_j and ∂X_j/∂q_c of one pair at one slave node, and at a slipping node B^c_j and ∂T_j/∂q_c, in the pair's local
+/// b^c_j and ∂X_j/∂q_c of one pair at one slave node, and where it reads T_j B^c_j and ∂T_j/∂q_c, in the pair's local
 /// DoF order (its EquationIdVector).
 struct NodalGapCouplingTerms {
     Vector force_per_gap;   ///< b = ∂RHS/∂X_j (RHS the force on the bodies)
     Vector gap_gradient;    ///< ∂X_j/∂q in this pair's unknowns (η ∂g̃_j/∂q + G ∂η/∂a_j ∂a_j/∂q)
-    bool slipping = false;  ///< whether the two slip terms below are set
+    bool reads_slip = false;  ///< whether the two slip terms below are set (an active node of the frictional family)
     Matrix force_per_slip;  ///< B = ∂RHS/∂T_j (n_dof × d)
     Matrix slip_gradient;   ///< ∂T_j/∂q in this pair's unknowns (d × n_dof): (∂(a_j s_j) − T ∂a_j)/∂q / A_j
     /// Normals that follow the iterate: ∂X_j/∂n_m over the pair's slave nodes m (d n_s; empty when the normals are held)
     Vector gap_normal_gradient;
-    Matrix slip_normal_gradient;  ///< and ∂T_j/∂n_m (d × d n_s) at a slipping node
+    Matrix slip_normal_gradient;  ///< and ∂T_j/∂n_m (d × d n_s) where it reads T_j
 };
 
 /// A pair condition whose residual reads the nodal penalty gap X = η G of its slave nodes (and the transmitted slip T).
@@ -50,7 +50,7 @@ struct NodalGapCouplingRecord {
     std::array<bool, TNumNodes> coupled{};
     std::array<Eigen::Matrix<double, TMatrixSize, 1>, TNumNodes> force_per_gap{};
     std::array<Eigen::Matrix<double, TMatrixSize, 1>, TNumNodes> gap_gradient{};
-    std::array<bool, TNumNodes> slipping{};  ///< set with coupled, for a slipping node of the frictional family
+    std::array<bool, TNumNodes> reads_slip{};  ///< set with coupled, for an active node of the frictional family
     std::array<Eigen::Matrix<double, TMatrixSize, TDim>, TNumNodes> force_per_slip{};
     std::array<Eigen::Matrix<double, TDim, TMatrixSize>, TNumNodes> slip_gradient{};
     bool normals_recorded = false;  ///< the normal gradients below belong to this evaluation
@@ -59,7 +59,7 @@ struct NodalGapCouplingRecord {
 
     void Clear() {
         coupled.fill(false);
-        slipping.fill(false);
+        reads_slip.fill(false);
         normals_recorded = false;
     }
     /// After the AD pass that seeds the nodal normals in the first d n_s derivative slots (the main pass follows and
@@ -69,15 +69,15 @@ struct NodalGapCouplingRecord {
         for (int j = 0; j < TNumNodes; ++j) {
             if (!coupled[j]) continue;
             gap_normal_gradient[j] = gap_gradient[j].template head<TDim * TNumNodes>();
-            if (slipping[j]) slip_normal_gradient[j] = slip_gradient[j].template leftCols<TDim * TNumNodes>();
+            if (reads_slip[j]) slip_normal_gradient[j] = slip_gradient[j].template leftCols<TDim * TNumNodes>();
         }
     }
     bool Get(int j, NodalGapCouplingTerms& rTerms) const {
         if (!coupled[j]) return false;
         rTerms.force_per_gap = force_per_gap[j];
         rTerms.gap_gradient = gap_gradient[j];
-        rTerms.slipping = slipping[j];
-        if (slipping[j]) {
+        rTerms.reads_slip = reads_slip[j];
+        if (reads_slip[j]) {
             rTerms.force_per_slip = force_per_slip[j];
             rTerms.slip_gradient = slip_gradient[j];
         }
@@ -85,7 +85,7 @@ struct NodalGapCouplingRecord {
         rTerms.slip_normal_gradient.resize(0, 0);
         if (normals_recorded) {
             rTerms.gap_normal_gradient = gap_normal_gradient[j];
-            if (slipping[j]) rTerms.slip_normal_gradient = slip_normal_gradient[j];
+            if (reads_slip[j]) rTerms.slip_normal_gradient = slip_normal_gradient[j];
         }
         return true;
     }

@@ -130,7 +130,7 @@ void NodalNormalCoupling::AddLHS(ModelPart& rModelPart, const ProcessInfo& rProc
             for (std::size_t d = 0; d < node_pairs.size(); ++d) {
                 if (d == c || !coupled[d]) continue;
                 const CoupledPair& pair_d = data.pairs[data.penalty_pairs[node_pairs[d].first]];
-                const bool slipping = terms[c].slipping && terms[d].slipping;
+                const bool reads_slip = terms[c].reads_slip && terms[d].reads_slip;
                 for (std::size_t m = 0; m < pair_d.condition->GetGeometry().size(); ++m) {
                     const NormalDerivative& derivative = DerivativeOf(data, pair_d, static_cast<int>(m));
                     if (derivative.ids.empty()) continue;
@@ -138,7 +138,7 @@ void NodalNormalCoupling::AddLHS(ModelPart& rModelPart, const ProcessInfo& rProc
                     const auto column = static_cast<Eigen::Index>(m) * dim;
                     block.noalias() = -terms[c].force_per_gap *
                                       (terms[d].gap_normal_gradient.segment(column, dim).transpose() * derivative.jacobian);
-                    if (slipping)
+                    if (reads_slip)
                         block.noalias() -= terms[c].force_per_slip *
                                            (terms[d].slip_normal_gradient.middleCols(column, dim) * derivative.jacobian);
                     rSink(data.pairs[data.penalty_pairs[node_pairs[c].first]].ids, derivative.ids, &block);

@@ -59,8 +59,8 @@ void NodalPenaltyCoupling::AddLHS(ModelPart& rModelPart, const ProcessInfo& rPro
                 // A pair without terms (isolated now) adds nothing to G_j or T_j, so nothing to differentiate.
                 if (d == c || !coupled[d]) continue;
                 block = -terms[c].force_per_gap * terms[d].gap_gradient.transpose();
-                // A slipping node: every pair of it slips (the flag is nodal), its direction reads T_j.
-                if (terms[c].slipping && terms[d].slipping) block -= terms[c].force_per_slip * terms[d].slip_gradient;
+                // A frictional node: every pair of it reads T_j (stick traction or slip direction; the state is nodal).
+                if (terms[c].reads_slip && terms[d].reads_slip) block -= terms[c].force_per_slip * terms[d].slip_gradient;
                 rSink(pairs.ids[node_pairs[c].first], pairs.ids[node_pairs[d].first], &block);
             }
         }

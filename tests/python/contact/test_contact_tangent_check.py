@@ -15,7 +15,13 @@ import json
 from pathlib import Path
 
 import numpy as np
-from test_frictional_stick_slip import NON_MATCHING, SLIP_STEPS, _parameters, _write_case
+from test_frictional_stick_slip import (
+    NON_MATCHING,
+    SLIP_STEPS,
+    STICK_STEP,
+    _parameters,
+    _write_case,
+)
 
 import contact_app as ca
 from contact_app.analysis import StructuralMechanicsAnalysis
@@ -60,20 +66,42 @@ class _CheckedAnalysis(StructuralMechanicsAnalysis):
             strategy.SetIterationObserver(None)
 
 
-def test_penalty_frictional_slip_tangent_is_exact_on_the_whole_model(tmp_path: Path) -> None:
-    _write_case(tmp_path, NON_MATCHING, 0.3)
-    parameters = _parameters(tmp_path, "PenaltyContactFrictional", 2)
-    parameters["problem_data"]["end_time"] = float(SLIP_STEPS[0])
+def _checked_run(directory: Path, step: int) -> _CheckedAnalysis:
+    """The non-matching penalty frictional block up to ``step``, its tangent checked there."""
+    _write_case(directory, NON_MATCHING, 0.3)
+    parameters = _parameters(directory, "PenaltyContactFrictional", 2)
+    parameters["problem_data"]["end_time"] = float(step)
     analysis = _CheckedAnalysis(
         ca.Model(),
         Parameters(json.dumps(parameters)),
         reporter=Reporter(quiet=True),
-        steps=(SLIP_STEPS[0],),
+        steps=(step,),
     )
     analysis.Run()
     mp = analysis.model.GetModelPart("Structure")
     assert mp.ProcessInfo[ca.CONSIDER_NORMAL_VARIATION] != 0  # the normals follow the iterate
-    assert any(n.Is(ca.SLIP) for n in mp.GetSubModelPart("Contact").Nodes)
+    return analysis
+
+
+def test_penalty_frictional_slip_tangent_is_exact_on_the_whole_model(tmp_path: Path) -> None:
+    analysis = _checked_run(tmp_path, SLIP_STEPS[0])
+    contact = analysis.model.GetModelPart("Structure").GetSubModelPart("Contact")
+    assert any(n.Is(ca.SLIP) for n in contact.Nodes)
     print(f"penalty frictional slip step: (sets settled, |Av - fd| / |fd|) {analysis.errors}")
+    assert any(unchanged for unchanged, _ in analysis.errors)
+    assert max(error for _, error in analysis.errors) < 1e-7
+
+
+def test_penalty_frictional_stick_tangent_is_exact_on_the_whole_model(tmp_path: Path) -> None:
+    """Stick: the cross-pair blocks of the nodal stick traction come from NodalPenaltyCoupling.
+
+    A sticking node pushes every pair with kappa eps (e + T), T the slip all its pairs transmit,
+    so each pair's residual reads the other pairs' unknowns through T (docs/theory/mortar.md §8).
+    """
+    analysis = _checked_run(tmp_path, STICK_STEP)
+    contact = analysis.model.GetModelPart("Structure").GetSubModelPart("Contact")
+    sticking = [n for n in contact.Nodes if n.Is(ca.ACTIVE) and not n.Is(ca.SLIP)]
+    assert sticking
+    print(f"penalty frictional stick step: (sets settled, |Av - fd| / |fd|) {analysis.errors}")
     assert any(unchanged for unchanged, _ in analysis.errors)
     assert max(error for _, error in analysis.errors) < 1e-7
