@@ -168,6 +168,20 @@ bool Reversed(const Node& node, const Array3& direction) {
     return node.Has(TANGENT_XI) && node.GetValue(TANGENT_XI).dot(direction) < 0.0;
 }
 
+/// Whether a slipping node's tangential multiplier points against its slip of the step (k Pλ·PŜ < 0 with Ŝ =
+/// +WEIGHTED_SLIP, the master's motion relative to the slave, which the friction on the slave must follow): the
+/// friction of the build pushed the slave along its own motion relative to the master. Such a state solves the
+/// regularised slip law wherever c_t|PŜ| < μ|λ̄n| (the trial kPλ + c_t ε PŜ then keeps the multiplier's direction),
+/// and the direction update 2-cycles around it (12 newly touching edge nodes of the Cattaneo–Mindlin 3D level 3, for
+/// 30 iterations). The node sticks for the next update, as a reversing penalty node does (docs/theory/active_set.md
+/// §3).
+bool NotDissipative(const Node& node, const Array3& lambda, const Array3& normal) {
+    Array3 slip = node.FastGetSolutionStepValue(WEIGHTED_SLIP);
+    slip -= normal.dot(slip) * normal;
+    const Array3 tangential = lambda - normal.dot(lambda) * normal;
+    return tangential.dot(slip) < -1e-12 * tangential.norm() * slip.norm();
+}
+
 /// Raises a slipping node's SLIP_TRIAL_FACTOR f when the iteration turned its direction by more than the slip law's
 /// linearisation covers: the trial k Pλ + f ε Pũτ resists a rotation θ only through f ε|Pũτ|, so its tangent holds
 /// for θ ≲ θ_f = √(2 f ε|Pũτ| / μ|λ̄n|). A turn θ > θ_f (from the build's TANGENT_XI to @p direction) sets f so that
@@ -346,8 +360,10 @@ std::array<std::size_t, 2> ComputeALMFrictionalActiveSet(ModelPart& model_part, 
         // hysteresis. A frictionless node slips (the test would be 0/0 and flip between states).
         const bool was_slip = node->Is(SLIP);
         const double threshold = was_slip ? 1.0 - slip_threshold : 1.0;
-        const bool slip =
-            pure_slip || mu < kMachineEpsilon || trial.norm() > -mu * transmitted_normal * threshold;
+        // A slipping node whose friction fed its slip instead of resisting it overshot the cone: stick for the next update.
+        const bool slip = pure_slip || mu < kMachineEpsilon ||
+                          (trial.norm() > -mu * transmitted_normal * threshold &&
+                           !(was_slip && NotDissipative(*node, lambda, normal)));
         // The direction weighs the slip by the node's own c_t (SLIP_TRIAL_FACTOR, the one the build used).
         const Array3 direction = Direction(SlipDirectionTrial(*node, process_info));
         node->SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE,

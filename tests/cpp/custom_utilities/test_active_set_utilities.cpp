@@ -329,6 +329,29 @@ TEST(ActiveSetUtilities, test_alm_frictional_node_leaving_stick_returns_to_the_c
     EXPECT_EQ(slipping.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER), Array3(0.9, -1.0, 0.3));
 }
 
+TEST(ActiveSetUtilities, test_alm_frictional_slip_node_whose_friction_feeds_its_slip_sticks) {
+    // λ = (0.9, −1, 0.3), k = 2: kPλ = (1.8, 0, 0.6), λ̄n = −2, μ = 0.25: every trial (|kPλ + εŜ| ≈ 1.9) exceeds the bound
+    // 0.5. A slipping node with Ŝ = (−1e-3, 0, 0) had its friction along its own motion (kPλ·Ŝ < 0): it overshot the
+    // cone and sticks; with Ŝ = (+1e-3, 0, 0) it dissipates and keeps slipping; a sticking node leaves for slip either way.
+    ActiveSetModel m;
+    auto node_with = [&](bool slip, double weighted_slip) -> Node& {
+        Node& node = m.Add(0.0, true, slip);
+        node.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) = Array3(0.9, -1.0, 0.3);
+        node.FastGetSolutionStepValue(WEIGHTED_SLIP) = Array3(weighted_slip, 0.0, 0.0);
+        node.SetValue(FRICTION_COEFFICIENT, 0.25);
+        node.SetValue(TANGENT_XI, Array3(1.8, 0.0, 0.6).normalized());
+        return node;
+    };
+    Node& feeding = node_with(true, -1e-3);
+    Node& dissipating = node_with(true, 1e-3);
+    Node& sticking = node_with(false, -1e-3);
+    const auto flips = ActiveSetUtilities::ComputeALMFrictionalActiveSet(*m.root);
+    EXPECT_FALSE(feeding.Is(SLIP));
+    EXPECT_TRUE(dissipating.Is(SLIP));
+    EXPECT_TRUE(sticking.Is(SLIP));
+    EXPECT_GE(flips[1], 2u);
+}
+
 TEST(ActiveSetUtilities, test_alm_frictional_frictionless_node_activation_drops_the_tangent) {
     ActiveSetModel m;
     Node& entering = m.Add(-0.1, false);
