@@ -174,10 +174,18 @@ bool Reversed(const Node& node, const Array3& direction) {
 /// regularised slip law wherever c_t|PŜ| < μ|λ̄n| (the trial kPλ + c_t ε PŜ then keeps the multiplier's direction),
 /// and the direction update 2-cycles around it (12 newly touching edge nodes of the Cattaneo–Mindlin 3D level 3, for
 /// 30 iterations). The node sticks for the next update, as a reversing penalty node does (docs/theory/active_set.md
-/// §3).
-bool NotDissipative(const Node& node, const Array3& lambda, const Array3& normal) {
+/// §3). Only a node whose factor f = SLIP_TRIAL_FACTOR was raised in the step counts (converging Newton paths pass
+/// through such states at the base factor: the 3D press fit), and only a slip that weighs at least
+/// kSlipDirectionTolerance of the bound @p bound in the trial, f ε|PŜ| with @p penalty = ε (a stick iterate may have
+/// just zeroed it).
+bool NotDissipative(const Node& node, const Array3& lambda, const Array3& normal, double bound, double penalty,
+                    const ProcessInfo& process_info) {
     Array3 slip = node.FastGetSolutionStepValue(WEIGHTED_SLIP);
     slip -= normal.dot(slip) * normal;
+    const double factor = SlipTrialFactor(node, process_info);
+    if (!(factor > SlipTrialFactor(process_info.Has(TANGENT_FACTOR) ? process_info.GetValue(TANGENT_FACTOR) : 0.0)))
+        return false;
+    if (!(factor * penalty * slip.norm() > kSlipDirectionTolerance * bound)) return false;
     const Array3 tangential = lambda - normal.dot(lambda) * normal;
     return tangential.dot(slip) < -1e-12 * tangential.norm() * slip.norm();
 }
@@ -363,7 +371,8 @@ std::array<std::size_t, 2> ComputeALMFrictionalActiveSet(ModelPart& model_part, 
         // A slipping node whose friction fed its slip instead of resisting it overshot the cone: stick for the next update.
         const bool slip = pure_slip || mu < kMachineEpsilon ||
                           (trial.norm() > -mu * transmitted_normal * threshold &&
-                           !(was_slip && NotDissipative(*node, lambda, normal)));
+                           !(was_slip && NotDissipative(*node, lambda, normal, -mu * transmitted_normal, penalty,
+                                                        process_info)));
         // The direction weighs the slip by the node's own c_t (SLIP_TRIAL_FACTOR, the one the build used).
         const Array3 direction = Direction(SlipDirectionTrial(*node, process_info));
         node->SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE,

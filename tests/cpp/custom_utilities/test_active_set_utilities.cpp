@@ -331,24 +331,28 @@ TEST(ActiveSetUtilities, test_alm_frictional_node_leaving_stick_returns_to_the_c
 
 TEST(ActiveSetUtilities, test_alm_frictional_slip_node_whose_friction_feeds_its_slip_sticks) {
     // λ = (0.9, −1, 0.3), k = 2: kPλ = (1.8, 0, 0.6), λ̄n = −2, μ = 0.25: every trial (|kPλ + εŜ| ≈ 1.9) exceeds the bound
-    // 0.5. A slipping node with Ŝ = (−1e-3, 0, 0) had its friction along its own motion (kPλ·Ŝ < 0): it overshot the
-    // cone and sticks; with Ŝ = (+1e-3, 0, 0) it dissipates and keeps slipping; a sticking node leaves for slip either way.
+    // 0.5. A slipping node whose direction turned beyond its linear range in the step (SLIP_TRIAL_FACTOR raised to 50)
+    // with Ŝ = (−1e-3, 0, 0) had its friction along its own motion (kPλ·Ŝ < 0): it overshot the cone and sticks; with
+    // Ŝ = (+1e-3, 0, 0) it dissipates and keeps slipping; so do a sticking node (it leaves for slip), a node at the base
+    // factor (a passing state of a converging Newton path) and a node whose slip is round-off for the direction.
     ActiveSetModel m;
-    auto node_with = [&](bool slip, double weighted_slip) -> Node& {
+    auto node_with = [&](bool slip, double weighted_slip, double factor) -> Node& {
         Node& node = m.Add(0.0, true, slip);
         node.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) = Array3(0.9, -1.0, 0.3);
         node.FastGetSolutionStepValue(WEIGHTED_SLIP) = Array3(weighted_slip, 0.0, 0.0);
         node.SetValue(FRICTION_COEFFICIENT, 0.25);
         node.SetValue(TANGENT_XI, Array3(1.8, 0.0, 0.6).normalized());
+        node.SetValue(SLIP_TRIAL_FACTOR, factor);
         return node;
     };
-    Node& feeding = node_with(true, -1e-3);
-    Node& dissipating = node_with(true, 1e-3);
-    Node& sticking = node_with(false, -1e-3);
+    Node& feeding = node_with(true, -1e-3, 50.0);
+    Node& dissipating = node_with(true, 1e-3, 50.0);
+    Node& sticking = node_with(false, -1e-3, 50.0);
+    Node& at_base = node_with(true, -1e-3, 1.0);
+    Node& round_off = node_with(true, -1e-9, 50.0);  // f ε|Ŝ| = 5e-7 < 1e-4 of the bound 0.5
     const auto flips = ActiveSetUtilities::ComputeALMFrictionalActiveSet(*m.root);
     EXPECT_FALSE(feeding.Is(SLIP));
-    EXPECT_TRUE(dissipating.Is(SLIP));
-    EXPECT_TRUE(sticking.Is(SLIP));
+    for (Node* node : {&dissipating, &sticking, &at_base, &round_off}) EXPECT_TRUE(node->Is(SLIP)) << node->Id();
     EXPECT_GE(flips[1], 2u);
 }
 
