@@ -184,11 +184,11 @@ MPCConstraintRelation MPC_CLASS::ComputeConstraintRelation(const ProcessInfo& rC
     // WEIGHTED_GAP is the gap of the configuration the constraint is built at: the start of the step for the step's
     // first build (buffer 1), the current iterate for a rebuild inside the step (INTERACTION; the criteria computed
     // the gaps of the iterate). A stick row keeps the tangential offset of the start of the step in either case.
-    const std::size_t gap_buffer = Is(INTERACTION) ? 0 : 1;
-    Eigen::Matrix<double, TNM, TDim> u2_gap, u2_previous;  // B7 done right: n_m master rows
+    const bool rebuild = Is(INTERACTION);
+    Eigen::Matrix<double, TNM, TDim> u2_previous, u2_current;  // B7 done right: n_m master rows
     for (int j = 0; j < TNM; ++j) {
-        u2_gap.row(j) = DisplacementAt<TDim>(master[j], gap_buffer).transpose();
         u2_previous.row(j) = DisplacementAt<TDim>(master[j], 1).transpose();
+        if (rebuild) u2_current.row(j) = DisplacementAt<TDim>(master[j], 0).transpose();
     }
 
     struct SlipRow {
@@ -215,8 +215,12 @@ MPCConstraintRelation MPC_CLASS::ComputeConstraintRelation(const ProcessInfo& rC
         // Gap carried by the constant: closing it needs n·(Δu1 − Q Δu2) = g̃/A from the displacements of the gap.
         const double area = node.Has(NODAL_AREA) && node.GetValue(NODAL_AREA) > 0.0 ? node.GetValue(NODAL_AREA) : 1.0;
         const double gap = node.FastGetSolutionStepValue(WEIGHTED_GAP);
+        // u_s − Q u_m at the start of the step, and where the gap was computed.
+        const Eigen::Matrix<double, TDim, 1> start =
+            DisplacementAt<TDim>(node, 1) - (Q.row(i) * u2_previous).transpose();
         const Eigen::Matrix<double, TDim, 1> relative =
-            DisplacementAt<TDim>(node, gap_buffer) - (Q.row(i) * u2_gap).transpose();
+            rebuild ? Eigen::Matrix<double, TDim, 1>(DisplacementAt<TDim>(node, 0) - (Q.row(i) * u2_current).transpose())
+                    : start;
         const double normal_constant = weight * (gap / area + n.dot(relative));
         // SLIP condition: slip nodes normal-only, stick nodes full; RIGID (tying): full; else frictionless.
         const bool normal_only = Is(SLIP) ? node.Is(SLIP) : !Is(RIGID);
@@ -231,9 +235,7 @@ MPCConstraintRelation MPC_CLASS::ComputeConstraintRelation(const ProcessInfo& rC
                 // Stick is no slip in the step (as the ALM stick rows, docs/theory/mortar.md §9): P(u_s − Q u_m) keeps
                 // its start-of-step value. Tying it to zero instead pulled a node back over the tangential motion it
                 // made before it touched (a stick force above the cone on every newly touching node).
-                Eigen::Matrix<double, TDim, 1> offset =
-                    DisplacementAt<TDim>(node, 1) - (Q.row(i) * u2_previous).transpose();
-                offset -= n.dot(offset) * n;
+                const Eigen::Matrix<double, TDim, 1> offset = start - n.dot(start) * n;
                 for (int a = 0; a < TDim; ++a) result.constant[i * TDim + a] += weight * offset[a];
             }
             continue;

@@ -168,6 +168,11 @@ bool Reversed(const Node& node, const Array3& direction) {
     return node.Has(TANGENT_XI) && node.GetValue(TANGENT_XI).dot(direction) < 0.0;
 }
 
+/// The slip trial factor every step starts from, SlipTrialFactor(κ) with κ = TANGENT_FACTOR of @p process_info.
+double BaseSlipTrialFactor(const ProcessInfo& process_info) {
+    return SlipTrialFactor(process_info.Has(TANGENT_FACTOR) ? process_info.GetValue(TANGENT_FACTOR) : 0.0);
+}
+
 /// Whether a slipping node's tangential multiplier points against its slip of the step (k Pλ·PŜ < 0 with Ŝ =
 /// +WEIGHTED_SLIP, the master's motion relative to the slave, which the friction on the slave must follow): the
 /// friction of the build pushed the slave along its own motion relative to the master. Such a state solves the
@@ -183,8 +188,7 @@ bool NotDissipative(const Node& node, const Array3& lambda, const Array3& normal
     Array3 slip = node.FastGetSolutionStepValue(WEIGHTED_SLIP);
     slip -= normal.dot(slip) * normal;
     const double factor = SlipTrialFactor(node, process_info);
-    if (!(factor > SlipTrialFactor(process_info.Has(TANGENT_FACTOR) ? process_info.GetValue(TANGENT_FACTOR) : 0.0)))
-        return false;
+    if (!(factor > BaseSlipTrialFactor(process_info))) return false;
     if (!(factor * penalty * slip.norm() > kSlipDirectionTolerance * bound)) return false;
     const Array3 tangential = lambda - normal.dot(lambda) * normal;
     return tangential.dot(slip) < -1e-12 * tangential.norm() * slip.norm();
@@ -242,14 +246,12 @@ double LargestFrictionBound(const std::vector<Node*>& nodes, TNormal&& transmitt
 
 double SlipTrialFactor(const Node& node, const ProcessInfo& process_info) {
     const double own = node.Has(SLIP_TRIAL_FACTOR) ? node.GetValue(SLIP_TRIAL_FACTOR) : 0.0;
-    return own > 0.0 ? own
-                     : SlipTrialFactor(process_info.Has(TANGENT_FACTOR) ? process_info.GetValue(TANGENT_FACTOR) : 0.0);
+    return own > 0.0 ? own : BaseSlipTrialFactor(process_info);
 }
 
 void ResetSlipTrialFactors(ModelPart& rContact) {
     const ProcessInfo& process_info = rContact.GetProcessInfo();
-    const double base =
-        SlipTrialFactor(process_info.Has(TANGENT_FACTOR) ? process_info.GetValue(TANGENT_FACTOR) : 0.0);
+    const double base = BaseSlipTrialFactor(process_info);
     for (const auto& node : rContact.Nodes())
         if (node->Is(SLAVE)) node->SetValue(SLIP_TRIAL_FACTOR, base);
 }
