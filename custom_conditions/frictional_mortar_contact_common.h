@@ -148,14 +148,12 @@ struct PreviousMortarOperators {
     void Save(Serializer& serializer) const {
         serializer.Save("PreviousMortarOperatorsInitialized", initialized);
         serializer.Save("PreviousMortarOperatorsOverlap", overlap);
-        serializer.Save("PreviousD", operators.D);
-        serializer.Save("PreviousM", operators.M);
+        operators.Save(serializer, "Previous");
     }
     void Load(Serializer& serializer) {
         serializer.Load("PreviousMortarOperatorsInitialized", initialized);
         serializer.Load("PreviousMortarOperatorsOverlap", overlap);
-        serializer.Load("PreviousD", operators.D);
-        serializer.Load("PreviousM", operators.M);
+        operators.Load(serializer, "Previous");
     }
 };
 

@@ -216,8 +216,7 @@ int TYING_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
 TYING_TEMPLATE
 void TYING_CLASS::Save(Serializer& rSerializer) const {
     PairedCondition::Save(rSerializer);
-    rSerializer.Save("MortarOperatorsD", mOperators.D);
-    rSerializer.Save("MortarOperatorsM", mOperators.M);
+    mOperators.Save(rSerializer, "MortarOperators");
     rSerializer.Save("DualBasis", mDual);
     rSerializer.Save("Initialized", mInitialized);
 }
@@ -225,8 +224,7 @@ void TYING_CLASS::Save(Serializer& rSerializer) const {
 TYING_TEMPLATE
 void TYING_CLASS::Load(Serializer& rSerializer) {
     PairedCondition::Load(rSerializer);
-    rSerializer.Load("MortarOperatorsD", mOperators.D);
-    rSerializer.Load("MortarOperatorsM", mOperators.M);
+    mOperators.Load(rSerializer, "MortarOperators");
     rSerializer.Load("DualBasis", mDual);
     rSerializer.Load("Initialized", mInitialized);
     mRestored = mInitialized;  // a pair saved before its Initialize still needs it

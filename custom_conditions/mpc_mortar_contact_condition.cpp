@@ -449,16 +449,14 @@ int MPC_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
 MPC_TEMPLATE
 void MPC_CLASS::Save(Serializer& rSerializer) const {
     PairedCondition::Save(rSerializer);
-    rSerializer.Save("PreviousMortarOperatorsD", mPreviousMortarOperators.D);
-    rSerializer.Save("PreviousMortarOperatorsM", mPreviousMortarOperators.M);
+    mPreviousMortarOperators.Save(rSerializer, "PreviousMortarOperators");
     rSerializer.Save("PreviousMortarOperatorsInitialized", mPreviousMortarOperatorsInitialized);
 }
 
 MPC_TEMPLATE
 void MPC_CLASS::Load(Serializer& rSerializer) {
     PairedCondition::Load(rSerializer);
-    rSerializer.Load("PreviousMortarOperatorsD", mPreviousMortarOperators.D);
-    rSerializer.Load("PreviousMortarOperatorsM", mPreviousMortarOperators.M);
+    mPreviousMortarOperators.Load(rSerializer, "PreviousMortarOperators");
     rSerializer.Load("PreviousMortarOperatorsInitialized", mPreviousMortarOperatorsInitialized);
     mRestored = true;
 }

@@ -2,12 +2,14 @@
 #pragma once
 
 #include <array>
+#include <string>
 #include <tuple>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "automatic_differentiation/dual.h"
+#include "contact_app/kernel/serializer.h"
 
 namespace contact_app {
 
@@ -104,6 +106,15 @@ struct MortarOperators {
     void Initialize() {
         D.setZero();
         M.setZero();
+    }
+    /// Restart (double operators): D and M under the tags "<prefix>D" and "<prefix>M".
+    void Save(Serializer& serializer, const std::string& prefix) const {
+        serializer.Save((prefix + "D").c_str(), D);
+        serializer.Save((prefix + "M").c_str(), M);
+    }
+    void Load(Serializer& serializer, const std::string& prefix) {
+        serializer.Load((prefix + "D").c_str(), D);
+        serializer.Load((prefix + "M").c_str(), M);
     }
 };
 
