@@ -346,18 +346,30 @@ void StaticCondensationSolver::FactoriseBulk(SparseMatrixType a_bb, Bulk& rBulk)
         const double scale = a_bb.nonZeros() ? a_bb.coeffs().cwiseAbs().maxCoeff() : 0.0;
         return (asymmetry.nonZeros() ? asymmetry.coeffs().cwiseAbs().maxCoeff() : 0.0) <= 1e-14 * scale;
     }();
+    // CHOLMOD's order first (symbolic), then MUMPS's factorisation for P, then CHOLMOD's numeric factor: MUMPS frees
+    // its factor before CHOLMOD builds its own, so the peak holds one factor of the bulk, not two
+    // (docs/theory/static_condensation.md §2).
     if (symmetric) {
         rBulk.cholesky = std::make_unique<BulkCholesky>();
-        rBulk.cholesky->compute(a_bb);
+        rBulk.cholesky->analyzePattern(a_bb);
         if (rBulk.cholesky->info() != Eigen::Success) rBulk.cholesky.reset();
     }
-    // P from MUMPS's Schur complement (symmetric, in CHOLMOD's order, when the bulk is SPD).
+    // P from MUMPS's Schur complement (LDLᵀ in CHOLMOD's order when the bulk is symmetric).
     const SparseMatrixType bc_transposed = rBulk.a_bc.transpose();
     const bool symmetric_coupling = rBulk.cholesky && (bc_transposed - rBulk.a_cb).norm() <= 1e-14 * rBulk.a_cb.norm();
-    const bool have_product =
+    bool have_product =
         SchurProductWithMumps(a_bb, rBulk.a_bc, rBulk.a_cb, symmetric_coupling,
                               symmetric_coupling ? rBulk.cholesky->EliminationOrder() : std::vector<int>{},
                               rBulk.schur_product);
+    if (rBulk.cholesky) {
+        rBulk.cholesky->factorize(a_bb);
+        if (rBulk.cholesky->info() != Eigen::Success) {
+            rBulk.cholesky.reset();
+            // Not positive definite: MUMPS's symmetric run assumed it was; take its unsymmetric factorisation.
+            if (symmetric_coupling)
+                have_product = SchurProductWithMumps(a_bb, rBulk.a_bc, rBulk.a_cb, false, {}, rBulk.schur_product);
+        }
+    }
     if (!rBulk.cholesky) {
         rBulk.a_bb = std::move(a_bb);
         rBulk.lu = std::make_unique<Eigen::UmfPackLU<SparseMatrixType>>();

@@ -151,6 +151,17 @@ TEST(StaticCondensationSolver, UnsymmetricBulkTakesTheLuPath) {
     EXPECT_TRUE(solver.LastSolveWasCondensed());
 }
 
+// A symmetric bulk that is not positive definite: CHOLMOD's numeric factor (which runs after MUMPS's symmetric
+// factorisation for P) fails, so P must come from MUMPS's unsymmetric factorisation and the bulk from UMFPACK.
+TEST(StaticCondensationSolver, SymmetricIndefiniteBulkTakesTheLuPath) {
+    GridSystem grid;
+    StaticCondensationSolver solver(Umfpack(), StaticCondensationMode::On);
+    Triplets bulk = grid.Bulk();
+    for (int i : {2, 5}) bulk.emplace_back(grid.Displacement(i, 3, 0), grid.Displacement(i, 3, 0), -40.0);
+    EXPECT_LT(Difference(solver, grid, grid.Assemble(bulk, grid.Contact(2)), grid.Rhs(2)), 1e-10);
+    EXPECT_TRUE(solver.LastSolveWasCondensed());
+}
+
 TEST(StaticCondensationSolver, ChangedBulkIsCondensedAgainAndTwiceInARowStops) {
     GridSystem grid;
     StaticCondensationSolver solver(Umfpack(), StaticCondensationMode::On);
