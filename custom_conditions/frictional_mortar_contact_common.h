@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// Pieces shared by the two frictional families (ALM frictional and penalty frictional): the Σ s_i 3^i state
-/// encoding, the nodal friction data (μ_j, t_j, κ), the two slip measures, the objective switch, the
-/// start-of-step ("previous") mortar operators with their life cycle and restart state, and the explicit
-/// WEIGHTED_GAP + WEIGHTED_SLIP contribution. Builds on frictionless_mortar_contact_common.h. Internal to
+/// encoding, the nodal friction data (μ_j, t_j, κ), the two slip measures, the objective switch, the once-per-step
+/// computation of the start-of-step operators (`PreviousMortarOperators`, previous_mortar_operators.h, which MPC
+/// friction shares), and the explicit WEIGHTED_GAP + WEIGHTED_SLIP contribution. Builds on frictionless_mortar_contact_common.h. Internal to
 /// custom_conditions/. Equations: docs/theory/contact_residuals.md §2 (slip measures), §5, §7;
 /// docs/theory/active_set.md §3.
 
@@ -15,6 +15,7 @@
 #include "contact_app/kernel/serializer.h"
 #include "automatic_differentiation/dual.h"
 #include "custom_conditions/frictionless_mortar_contact_common.h"
+#include "custom_conditions/previous_mortar_operators.h"
 #include "custom_utilities/active_set_utilities.h"
 
 namespace contact_app::frictional_detail {
@@ -134,29 +135,6 @@ Eigen::Matrix<T, TDim, 1> TangentSlip(const TState& s, const SlipData<TDim, TNS,
     return ProjectTangent<T, TDim>(s, j, Eigen::Matrix<T, TDim, 1>(r.transpose()));
 }
 
-/// Start-of-step operators of a pair and whether they exist (explicit state: no stale operators).
-template <int TNS, int TNM>
-struct PreviousMortarOperators {
-    MortarOperators<double, TNS, TNM> operators;
-    bool initialized = false;  ///< computed for the current step (reset by FinalizeSolutionStep)
-    bool overlap = false;      ///< the pair overlapped at the start of the step (otherwise operators are zero)
-
-    void Reset() {
-        operators.Initialize();
-        initialized = overlap = false;
-    }
-    void Save(Serializer& serializer) const {
-        serializer.Save("PreviousMortarOperatorsInitialized", initialized);
-        serializer.Save("PreviousMortarOperatorsOverlap", overlap);
-        operators.Save(serializer, "Previous");
-    }
-    void Load(Serializer& serializer) {
-        serializer.Load("PreviousMortarOperatorsInitialized", initialized);
-        serializer.Load("PreviousMortarOperatorsOverlap", overlap);
-        operators.Load(serializer, "Previous");
-    }
-};
-
 /// Once per step (guarded by previous.initialized): D, M of the pair in the start-of-step configuration
 /// X0 + d(1) (the mesh coordinates when the mesh is not moved), with the condition's integration settings (so axisymmetric pairs carry 2πr/t, unlike the reference).
 template <int TDim, int TNS, int TNM, class TCondition>
@@ -175,10 +153,8 @@ void ComputePreviousOperatorsOnce(const TCondition& condition, const ProcessInfo
     const auto x1 = finite_sliding ? CoordinatesAtStep<TDim, TNS>(slave, 1) : MeshCoordinates<TDim, TNS>(slave);
     const auto x2 = finite_sliding ? CoordinatesAtStep<TDim, TNM>(master, 1) : MeshCoordinates<TDim, TNM>(master);
     bool dual = false;
-    previous.operators = ComputePreviousMortarOperators<TDim, TNS, TNM>(
-        integrator, x1, ToSpatialVector<TDim>(condition.GetValue(NORMAL)), x2, NodalNormals<TDim, TNS>(slave), dual);
-    previous.overlap = previous.operators.D.norm() > 0.0;
-    previous.initialized = true;
+    previous.Set(ComputePreviousMortarOperators<TDim, TNS, TNM>(
+        integrator, x1, ToSpatialVector<TDim>(condition.GetValue(NORMAL)), x2, NodalNormals<TDim, TNS>(slave), dual));
 }
 
 /// Objective iff the pair overlapped at the start of the step and ‖D − D_old‖_F > τ and ‖M − M_old‖_F > τ,

@@ -104,7 +104,7 @@ protected:
 
 private:
     /// The start-of-step operators of a Coulomb family (nothing for a frictionless one).
-    std::conditional_t<IsFrictional, frictional_detail::PreviousMortarOperators<TNumNodes, TNumNodesMaster>,
+    std::conditional_t<IsFrictional, PreviousMortarOperators<TNumNodes, TNumNodesMaster>,
                        std::monostate>
         mPreviousMortarOperators;
 };

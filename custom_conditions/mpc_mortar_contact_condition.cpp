@@ -121,8 +121,7 @@ typename MPC_CLASS::Operators MPC_CLASS::CurrentOperators(const ProcessInfo& rCu
 MPC_TEMPLATE
 void MPC_CLASS::ComputePreviousOperators(const ProcessInfo& rCurrentProcessInfo) {
     bool dual = false;
-    mPreviousMortarOperators = CurrentOperators(rCurrentProcessInfo, dual);
-    mPreviousMortarOperatorsInitialized = true;
+    mPreviousMortarOperators.Set(CurrentOperators(rCurrentProcessInfo, dual));
 }
 
 MPC_TEMPLATE
@@ -131,8 +130,7 @@ void MPC_CLASS::Initialize(const ProcessInfo& rCurrentProcessInfo) {
     // restart-time coordinates, while the saving run went on with the one it held (BLOCKED after its step).
     if (std::exchange(mRestored, false)) return;
     PairedCondition::Initialize(rCurrentProcessInfo);
-    mPreviousMortarOperators.Initialize();
-    mPreviousMortarOperatorsInitialized = false;
+    mPreviousMortarOperators.Reset();
     const ProcessInfo empty;  // as the reference: the first update ignores the ProcessInfo settings
     if (Is(SLIP)) ComputePreviousOperators(empty);
     UpdateConstraint(empty);
@@ -324,7 +322,7 @@ void MPC_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Proce
     if (pLhs == nullptr) return;
     Matrix& lhs = *pLhs;
     lhs.setZero(MatrixSize, MatrixSize);
-    if (!Is(SLIP) || !mPreviousMortarOperatorsInitialized) return;
+    if (!Is(SLIP) || !mPreviousMortarOperators.initialized) return;
     const Geometry& slave = GetParentGeometry();
     bool any_slip = false;
     for (int i = 0; i < TNS; ++i) any_slip = any_slip || (IsActiveNode(slave[i]) && slave[i].Is(SLIP));
@@ -332,7 +330,7 @@ void MPC_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Proce
     bool dual = false;
     const Operators operators = CurrentOperators(rCurrentProcessInfo, dual);
     const Eigen::Matrix<double, TNS, TNM> Q = ComputeQ(operators, dual);
-    const Operators& previous = mPreviousMortarOperators;
+    const Operators& previous = mPreviousMortarOperators.operators;
     const auto normals = NodalNormals<TDim, TNS>(slave);
     using VectorD = Eigen::Matrix<double, TDim, 1>;
     using MatrixD = Eigen::Matrix<double, TDim, TDim>;
@@ -407,8 +405,9 @@ void MPC_CLASS::AddExplicitContribution(const ProcessInfo& rCurrentProcessInfo) 
                 ? rCurrentProcessInfo.GetValue(DELTA_TIME)
                 : 1.0;
         result = ComputeExplicitFrictionalMortarContribution<TDim, TNS, TNM, double, double>(
-            integrator, x1, center, x2, normals, mPreviousMortarOperators, CoordinatesAtStep<TDim, TNS>(slave, 1),
-            CoordinatesAtStep<TDim, TNM>(master, 1), delta_time, !Is(MODIFIED), options);
+            integrator, x1, center, x2, normals, mPreviousMortarOperators.operators,
+            CoordinatesAtStep<TDim, TNS>(slave, 1), CoordinatesAtStep<TDim, TNM>(master, 1), delta_time, !Is(MODIFIED),
+            options);
     } else {
         result = ComputeExplicitMortarContribution<TDim, TNS, TNM, double, double>(integrator, x1, center, x2,
                                                                                    normals, options);
@@ -449,15 +448,13 @@ int MPC_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
 MPC_TEMPLATE
 void MPC_CLASS::Save(Serializer& rSerializer) const {
     PairedCondition::Save(rSerializer);
-    mPreviousMortarOperators.Save(rSerializer, "PreviousMortarOperators");
-    rSerializer.Save("PreviousMortarOperatorsInitialized", mPreviousMortarOperatorsInitialized);
+    mPreviousMortarOperators.Save(rSerializer);
 }
 
 MPC_TEMPLATE
 void MPC_CLASS::Load(Serializer& rSerializer) {
     PairedCondition::Load(rSerializer);
-    mPreviousMortarOperators.Load(rSerializer, "PreviousMortarOperators");
-    rSerializer.Load("PreviousMortarOperatorsInitialized", mPreviousMortarOperatorsInitialized);
+    mPreviousMortarOperators.Load(rSerializer);
     mRestored = true;
 }
 

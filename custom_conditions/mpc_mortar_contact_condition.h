@@ -2,6 +2,7 @@
 #pragma once
 
 #include "custom_conditions/paired_condition.h"
+#include "custom_conditions/previous_mortar_operators.h"
 #include "custom_utilities/mortar_types.h"
 
 namespace contact_app {
@@ -88,8 +89,8 @@ public:
     /// stays if the relation or the test relation uses it), SetDofList, SetLocalSystem and SetTestRelation.
     void UpdateConstraint(const ProcessInfo& rCurrentProcessInfo);
 
-    const Operators& GetPreviousMortarOperators() const { return mPreviousMortarOperators; }
-    bool PreviousMortarOperatorsInitialized() const { return mPreviousMortarOperatorsInitialized; }
+    const Operators& GetPreviousMortarOperators() const { return mPreviousMortarOperators.operators; }
+    bool PreviousMortarOperatorsInitialized() const { return mPreviousMortarOperators.initialized; }
 
 protected:
     /// @brief A zero RHS: the Coulomb force of a slipping node is carried by the constraint's test relation
@@ -108,8 +109,7 @@ private:
     Operators CurrentOperators(const ProcessInfo& rCurrentProcessInfo, bool& dual) const;
     void ComputePreviousOperators(const ProcessInfo& rCurrentProcessInfo);
 
-    Operators mPreviousMortarOperators;
-    bool mPreviousMortarOperatorsInitialized = false;
+    PreviousMortarOperators<TNumNodes, TNumNodesMaster> mPreviousMortarOperators;
     bool mRestored = false;  ///< set by Load, consumed by the next Initialize
 };
 

@@ -20,7 +20,8 @@ class ModelPart;
 /// Format and guarantees: docs/running.md, "Restart and checkpoints".
 class ModelPartCheckpoint {
 public:
-    static constexpr std::uint32_t kFormatVersion = 2;  ///< 2: constraints store their test relation
+    static constexpr std::uint32_t kFormatVersion = 3;  ///< 2: constraints store their test relation; 3: MPC pairs
+                                                        ///< store their start-of-step operators as the Coulomb families
     static constexpr std::size_t kHeaderSize = 32;
 
     /// What the header and the first payload section say (Inspect()).
