@@ -27,8 +27,10 @@ StaticCondensationMode ParseStaticCondensationMode(const std::string& name);
 inline constexpr std::size_t kAutoCondensationMinimumSize = 20000;
 /// ...whose interface holds at most this share of the equations...
 inline constexpr double kAutoCondensationMaximumShare = 0.1;
-/// ...and at most this many equations (the dense Schur complement takes 8 n_I² bytes: 0.5 GB at 8000).
-inline constexpr std::size_t kAutoCondensationMaximumInterface = 8000;
+/// ...and at most this many equations (the dense Schur complement takes 8 n_I² bytes: 1.15 GB at 12 000; its LU
+/// ∝ n_I³, 7.5 s at 10 288 on 2 cores, while the whole system's sparse factorisation at that size took 55 s:
+/// benchmarks/README.md, "Larger levels").
+inline constexpr std::size_t kAutoCondensationMaximumInterface = 12000;
 
 /// Solves A x = b by condensing a constant bulk onto the contact interface (docs/theory/static_condensation.md).
 /// Interface I: every DoF of the INTERFACE nodes and every DoF that is not a displacement (the multipliers);
