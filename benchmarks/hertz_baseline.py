@@ -189,7 +189,15 @@ def main(argv: list[str]) -> int:
     solvers = options["solver"].split(",") if "solver" in options else [None]
     thread_counts = options["threads"].split(",") if "threads" in options else [None]
     linear = json.loads(options.get("linear", "{}"))
-    levels = [float(a) if "." in a else int(a) for a in argv] or [1, 2, 3]
+    if any(a in ("-h", "--help") for a in argv):
+        print(__doc__)
+        return 0
+    try:
+        levels = [float(a) if "." in a else int(a) for a in argv] or [1, 2, 3]
+    except ValueError:
+        message = f"levels must be numbers (got {' '.join(argv)}); options: {', '.join(keys)}"
+        print(message, file=sys.stderr)
+        return 2
     OUT.mkdir(parents=True, exist_ok=True)
     rows = []
     jobs = [
