@@ -3,16 +3,15 @@
 /// Pieces shared by the two frictional families (ALM frictional and penalty frictional): the Σ s_i 3^i state
 /// encoding, the nodal friction data (μ_j, t_j, κ), the two slip measures, the objective switch, the once-per-step
 /// computation of the start-of-step operators (`PreviousMortarOperators`, previous_mortar_operators.h, which MPC
-/// friction shares), and the explicit WEIGHTED_GAP + WEIGHTED_SLIP contribution. Builds on frictionless_mortar_contact_common.h. Internal to
-/// custom_conditions/. Equations: docs/theory/contact_residuals.md §2 (slip measures), §5, §7;
-/// docs/theory/active_set.md §3.
+/// friction shares), and the explicit WEIGHTED_GAP + WEIGHTED_SLIP contribution. Builds on
+/// frictionless_mortar_contact_common.h. Internal to custom_conditions/. Equations: docs/theory/contact_residuals.md
+/// §2 (slip measures), §5, §7; docs/theory/active_set.md §3.
 
 #include <array>
 #include <cmath>
 
 #include <Eigen/Core>
 
-#include "contact_app/kernel/serializer.h"
 #include "automatic_differentiation/dual.h"
 #include "custom_conditions/frictionless_mortar_contact_common.h"
 #include "custom_conditions/previous_mortar_operators.h"
