@@ -1309,6 +1309,10 @@ class Element(Flags):
         """
         Stores a value for the variable.
         """
+    def WhyStiffnessVaries(self) -> str:
+        """
+        Why the tangent stiffness may change with the displacement, "" if it cannot while the properties stay; completes "element <id> ...".
+        """
     def __eq__(self, arg0: Element) -> bool:
         """
         Same C++ object.

@@ -64,7 +64,7 @@ void DefOnIntegrationPoints(TPyClass& cls) {
 
 /// Element or Condition (Kratos Entity API).
 template <class TEntity>
-void BindEntity(py::module_& m, const char* name, const char* doc) {
+auto BindEntity(py::module_& m, const char* name, const char* doc) {
     py::class_<TEntity, Flags, std::shared_ptr<TEntity>> cls(m, name, doc, py::multiple_inheritance());
     DefLifeCycle(cls);
     const auto pi = py::arg("process_info");
@@ -153,6 +153,7 @@ void BindEntity(py::module_& m, const char* name, const char* doc) {
     DefOnIntegrationPoints<Array3>(cls);
     DefOnIntegrationPoints<Vector>(cls);
     DefOnIntegrationPoints<Matrix>(cls);
+    return cls;
 }
 
 void BindMasterSlaveConstraint(py::module_& m) {
@@ -203,8 +204,11 @@ void BindMasterSlaveConstraint(py::module_& m) {
 }  // namespace
 
 void BindEntities(py::module_& m) {
-    BindEntity<Element>(m, "Element",
-                        "A domain element (Kratos Element); the base class is a geometry-only mesh element.");
+    auto element = BindEntity<Element>(
+        m, "Element", "A domain element (Kratos Element); the base class is a geometry-only mesh element.");
+    element.def("WhyStiffnessVaries", &Element::WhyStiffnessVaries,
+                "Why the tangent stiffness may change with the displacement, \"\" if it cannot while the properties "
+                "stay; completes \"element <id> ...\".");
     BindEntity<Condition>(m, "Condition", "A boundary or interface condition (Kratos Condition).");
     BindMasterSlaveConstraint(m);
 }

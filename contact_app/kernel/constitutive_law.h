@@ -65,6 +65,9 @@ public:
     virtual int Check(const Properties& rMaterialProperties, const Geometry& rElementGeometry,
                       const ProcessInfo& rCurrentProcessInfo) const;
     virtual std::string Info() const { return "ConstitutiveLaw"; }
+    /// True if the stress is D ε with D fixed by the properties and the law keeps no state: an element on constant
+    /// kinematics may then keep its stiffness within a solution step (docs/theory/solid_elements.md).
+    virtual bool IsLinear() const { return false; }
 };
 
 }  // namespace contact_app

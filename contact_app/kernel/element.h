@@ -13,6 +13,11 @@ extern template class Entity<Element>;
 class Element : public Entity<Element> {
 public:
     using Entity<Element>::Entity;
+
+    /// Why the tangent stiffness may change with the displacement, "" if it cannot while the properties stay (the
+    /// static condensation factorises such a bulk once: docs/theory/static_condensation.md). The reason completes
+    /// "element <id> ...", e.g. "is a TotalLagrangianElement, whose stiffness follows the displacement".
+    virtual std::string WhyStiffnessVaries() const;
 };
 
 }  // namespace contact_app

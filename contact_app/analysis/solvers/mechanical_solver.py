@@ -11,7 +11,6 @@ way.
 from __future__ import annotations
 
 import logging
-import re
 from pathlib import Path
 from typing import Any
 
@@ -157,11 +156,6 @@ STOP_DEFAULT_REASON = (
 INVERTED_ELEMENT_CUTTING = (10.0, 3)
 
 
-#: Element families whose stiffness does not depend on the displacement (with a linear law).
-LINEAR_ELEMENT_FAMILIES = ("SmallDisplacementElement", "AxisymSmallDisplacementElement")
-_ELEMENT_FAMILY = re.compile(r"([A-Za-z]+?)\dD\d+N #")
-
-
 def static_condensation_mode(linear: Parameters) -> str:
     """``linear_solver_settings.static_condensation`` as the solver's mode: "auto", "on" or "off".
 
@@ -189,24 +183,15 @@ def static_condensation_mode(linear: Parameters) -> str:
 def bulk_not_linear(part: Any) -> str:
     """Why the stiffness of the bodies of ``part`` may change between iterations ("" = it cannot).
 
-    It cannot for small-displacement elements (kinematics on the initial configuration) with a
-    linear elastic law; finite-strain elements and the hyperelastic and Saint Venant-Kirchhoff
-    laws change it with the displacement (docs/theory/static_condensation.md).
+    Each element answers for itself (``Element.WhyStiffnessVaries``): it cannot for
+    small-displacement elements (kinematics on the initial configuration) with a linear elastic
+    law; finite-strain elements and the hyperelastic and Saint Venant-Kirchhoff laws change it
+    with the displacement (docs/theory/static_condensation.md).
     """
-    laws: dict[int, str] = {}
     for element in part.Elements:
-        info = element.Info()
-        match = _ELEMENT_FAMILY.match(info)
-        family = match.group(1) if match else info
-        if family not in LINEAR_ELEMENT_FAMILIES:
-            return f"element {element.Id} is a {family}, whose stiffness follows the displacement"
-        properties = element.Properties
-        if properties.Id not in laws:
-            law = properties.GetValue(ca.CONSTITUTIVE_LAW)
-            laws[properties.Id] = law.Info() if law is not None else ""
-        if not laws[properties.Id].startswith("LinearElastic"):
-            name = laws[properties.Id] or "no constitutive law"
-            return f"element {element.Id} has {name}, not a linear elastic law"
+        reason = element.WhyStiffnessVaries()
+        if reason:
+            return f"element {element.Id} {reason}"
     return ""
 
 

@@ -28,10 +28,106 @@ private:
     std::chrono::steady_clock::time_point mStart;
 };
 
-bool DofLess(const Dof* a, const Dof* b) {
-    if (a->Id() != b->Id()) return a->Id() < b->Id();
-    return a->GetVariable().Key() < b->GetVariable().Key();
+/// A DoF with the key it is ordered by (node id, then variable key), so that sorting compares numbers held side by side
+/// instead of following two pointers per comparison (a 2D mesh of 3.7e5 nodes lists 3e6 DoFs, each several times).
+struct KeyedDof {
+    std::size_t node;
+    std::size_t variable;
+    Dof* dof;
+    bool operator<(const KeyedDof& other) const {
+        return node != other.node ? node < other.node : variable < other.variable;
+    }
+};
+
+/// The distinct DoFs of @p rDofs ordered by node id and variable key.
+DofsArrayType SortedDistinctDofs(DofsArrayType& rDofs) {
+    std::sort(rDofs.begin(), rDofs.end());  // by address: the duplicates adjacent, cheaply
+    rDofs.erase(std::unique(rDofs.begin(), rDofs.end()), rDofs.end());
+    std::vector<KeyedDof> keyed;
+    keyed.reserve(rDofs.size());
+    for (Dof* dof : rDofs) keyed.push_back({dof->Id(), dof->GetVariable().Key(), dof});
+    std::sort(keyed.begin(), keyed.end());
+    DofsArrayType result;
+    result.reserve(keyed.size());
+    for (const KeyedDof& entry : keyed) result.push_back(entry.dof);
+    return result;
 }
+
+/// The blocks (rows × columns of equation ids) the entities couple, recorded flat, then compressed into the
+/// compressed-column graph with every diagonal: one count pass, one fill pass and a sort per column, without a
+/// container per column (the allocations of which dominated the set-up of large meshes).
+class GraphBlocks {
+public:
+    explicit GraphBlocks(std::size_t size) : mSize(size) {}
+
+    /// Records rows × columns; ids ≥ the system size (fixed DoFs of the elimination builder) are skipped.
+    void Add(const EquationIdVectorType& rows, const EquationIdVectorType& columns) {
+        const std::size_t start = mIds.size();
+        for (const std::size_t i : rows)
+            if (i < mSize) mIds.push_back(static_cast<int>(i));
+        const auto row_count = static_cast<int>(mIds.size() - start);
+        for (const std::size_t j : columns)
+            if (j < mSize) mIds.push_back(static_cast<int>(j));
+        if (row_count == 0 || mIds.size() == start + static_cast<std::size_t>(row_count)) {
+            mIds.resize(start);
+            return;
+        }
+        mBlocks.push_back({start, row_count, static_cast<int>(mIds.size() - start) - row_count});
+    }
+
+    /// @return the number of stored entries of @p rA, which receives the graph (values zero)
+    std::size_t Compress(SparseMatrixType& rA) const {
+        const auto size = static_cast<int>(mSize);
+        std::vector<std::size_t> start(mSize + 1, 0);
+        for (std::size_t j = 0; j < mSize; ++j) start[j + 1] = 1;  // the diagonal
+        for (const Block& block : mBlocks)
+            for (int c = 0; c < block.columns; ++c) start[mIds[block.first + block.rows + c] + 1] += block.rows;
+        for (std::size_t j = 0; j < mSize; ++j) start[j + 1] += start[j];
+        std::vector<int> rows(start[mSize]);
+        std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+        for (std::size_t j = 0; j < mSize; ++j) rows[fill[j]++] = static_cast<int>(j);
+        for (const Block& block : mBlocks) {
+            const int* block_rows = mIds.data() + block.first;
+            for (int c = 0; c < block.columns; ++c) {
+                std::size_t& next = fill[mIds[block.first + block.rows + c]];
+                std::copy(block_rows, block_rows + block.rows, rows.begin() + static_cast<std::ptrdiff_t>(next));
+                next += block.rows;
+            }
+        }
+        std::vector<int> counts(mSize);
+        const auto n = static_cast<std::ptrdiff_t>(mSize);
+#pragma omp parallel for schedule(static)
+        for (std::ptrdiff_t j = 0; j < n; ++j) {
+            const auto first = rows.begin() + static_cast<std::ptrdiff_t>(start[j]);
+            const auto last = rows.begin() + static_cast<std::ptrdiff_t>(start[j + 1]);
+            std::sort(first, last);
+            counts[j] = static_cast<int>(std::unique(first, last) - first);
+        }
+        std::size_t nonzeros = 0;
+        for (const int count : counts) nonzeros += static_cast<std::size_t>(count);
+        rA.resize(size, size);
+        rA.resizeNonZeros(static_cast<Eigen::Index>(nonzeros));
+        int* outer = rA.outerIndexPtr();
+        int* inner = rA.innerIndexPtr();
+        outer[0] = 0;
+        for (std::size_t j = 0; j < mSize; ++j) {
+            std::copy_n(rows.begin() + static_cast<std::ptrdiff_t>(start[j]), counts[j], inner + outer[j]);
+            outer[j + 1] = outer[j] + counts[j];
+        }
+        std::fill(rA.valuePtr(), rA.valuePtr() + nonzeros, 0.0);
+        return nonzeros;
+    }
+
+private:
+    struct Block {
+        std::size_t first;  ///< position of its rows in mIds, its columns follow
+        int rows;
+        int columns;
+    };
+    std::size_t mSize;
+    std::vector<int> mIds;
+    std::vector<Block> mBlocks;
+};
 
 /// Calls @p action(entity) for every assembled element and condition.
 template <class TAction>
@@ -181,8 +277,8 @@ void BuilderAndSolver::SetUpDofSet(Scheme&, ModelPart& rModelPart) {
     ScopedTimer timer(mTimings.setup);
     const ProcessInfo& info = rModelPart.GetProcessInfo();
     DofsArrayType dofs, slaves, masters;
+    DofsVectorType local;
     ForEachAssembled(rModelPart, [&](auto& entity) {
-        DofsVectorType local;
         entity.GetDofList(local, info);
         dofs.insert(dofs.end(), local.begin(), local.end());
     });
@@ -191,52 +287,27 @@ void BuilderAndSolver::SetUpDofSet(Scheme&, ModelPart& rModelPart) {
         dofs.insert(dofs.end(), slaves.begin(), slaves.end());
         dofs.insert(dofs.end(), masters.begin(), masters.end());
     }
-    std::sort(dofs.begin(), dofs.end(), DofLess);
-    dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
-    mDofSet = std::move(dofs);
+    mDofSet = SortedDistinctDofs(dofs);
     mDofSetIsInitialized = true;
 }
 
 void BuilderAndSolver::ResizeAndInitializeVectors(Scheme& rScheme, SparseMatrixType& rA, SystemVectorType& rDx,
                                                   SystemVectorType& rB, ModelPart& rModelPart) {
     ScopedTimer timer(mTimings.setup);
-    const auto size = static_cast<int>(mEquationSystemSize);
     const ProcessInfo& info = rModelPart.GetProcessInfo();
-    // Column lists of the graph; every equation keeps its diagonal so Dirichlet rows stay solvable.
-    std::vector<std::vector<int>> columns(mEquationSystemSize);
-    for (int i = 0; i < size; ++i) columns[i].push_back(i);
+    // Every equation keeps its diagonal so Dirichlet rows stay solvable.
+    GraphBlocks graph(mEquationSystemSize);
     EquationIdVectorType ids;
-    auto add_block = [&](const EquationIdVectorType& rows_ids, const EquationIdVectorType& column_ids) {
-        for (const std::size_t j : column_ids) {
-            if (j >= mEquationSystemSize) continue;
-            for (const std::size_t i : rows_ids)
-                if (i < mEquationSystemSize) columns[j].push_back(static_cast<int>(i));
-        }
-    };
     ForEachAssembled(rModelPart, [&](auto& entity) {
         entity.EquationIdVector(ids, info);
-        add_block(ids, ids);
+        graph.Add(ids, ids);
     });
     for (const auto& contributor : mContributors)
         contributor->AddGraph(rModelPart, info, [&](const EquationIdVectorType& rows, const EquationIdVectorType& cols,
-                                                    const Matrix*) { add_block(rows, cols); });
+                                                    const Matrix*) { graph.Add(rows, cols); });
     (void)rScheme;
-    std::size_t nonzeros = 0;
-    for (auto& column : columns) {
-        std::sort(column.begin(), column.end());
-        column.erase(std::unique(column.begin(), column.end()), column.end());
-        nonzeros += column.size();
-    }
-    rA.resize(size, size);
-    rA.resizeNonZeros(static_cast<Eigen::Index>(nonzeros));
-    int* outer = rA.outerIndexPtr();
-    int* inner = rA.innerIndexPtr();
-    outer[0] = 0;
-    for (int j = 0; j < size; ++j) {
-        std::copy(columns[j].begin(), columns[j].end(), inner + outer[j]);
-        outer[j + 1] = outer[j] + static_cast<int>(columns[j].size());
-    }
-    std::fill(rA.valuePtr(), rA.valuePtr() + nonzeros, 0.0);
+    graph.Compress(rA);
+    const auto size = static_cast<Eigen::Index>(mEquationSystemSize);
     rDx.setZero(size);
     rB.setZero(size);
 }

@@ -37,6 +37,8 @@ public:
               const ProcessInfo& rCurrentProcessInfo) const override;
     /// The registered name, e.g. "LinearElastic3DLaw".
     std::string Info() const override;
+    /// True for the linear response (σ = D ε, no state).
+    bool IsLinear() const override { return TResponse == ElasticResponse::LINEAR; }
 };
 
 /// Isotropic linear elasticity σ = D ε (docs/theory/structural.md §4), D of the model (3D, plane strain, plane stress,

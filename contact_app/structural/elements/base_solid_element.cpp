@@ -80,10 +80,26 @@ void BaseSolidElement<TDim, TNumNodes, TStrainSize>::Initialize(const ProcessInf
         mLaws.push_back(law->Clone());
         mLaws.back()->InitializeMaterial(properties, geometry, N);
     }
+    mKeepsStiffness = HasConstantKinematics() && law->IsLinear();
+    mKeptStiffness.clear();
+}
+
+template <int TDim, int TNumNodes, int TStrainSize>
+std::string BaseSolidElement<TDim, TNumNodes, TStrainSize>::WhyStiffnessVaries() const {
+    if (!HasConstantKinematics())
+        return std::string("is a ") + FamilyName() + ", whose stiffness follows the displacement";
+    const Properties& properties = GetProperties();
+    const ConstitutiveLaw::Pointer law =
+        properties.Has(CONSTITUTIVE_LAW) ? properties.GetValue(CONSTITUTIVE_LAW) : nullptr;
+    if (law == nullptr) return "has no constitutive law";
+    if (!law->IsLinear()) return "has " + law->Info() + ", not a linear elastic law";
+    return "";
 }
 
 template <int TDim, int TNumNodes, int TStrainSize>
 void BaseSolidElement<TDim, TNumNodes, TStrainSize>::InitializeSolutionStep(const ProcessInfo& rCurrentProcessInfo) {
+    mKeptStiffness.clear();  // the properties may have changed since the last step
+    if (mKeepsStiffness) return;  // linear laws keep no state
     ForEachPointResponse(GetStressMeasure(), rCurrentProcessInfo,
                          [&](std::size_t g, const Kinematics&, ConstitutiveLaw::Parameters& values) {
                              mLaws[g]->InitializeMaterialResponse(values, GetStressMeasure());
@@ -92,6 +108,7 @@ void BaseSolidElement<TDim, TNumNodes, TStrainSize>::InitializeSolutionStep(cons
 
 template <int TDim, int TNumNodes, int TStrainSize>
 void BaseSolidElement<TDim, TNumNodes, TStrainSize>::FinalizeSolutionStep(const ProcessInfo& rCurrentProcessInfo) {
+    if (mKeepsStiffness) return;  // linear laws keep no state
     ForEachPointResponse(GetStressMeasure(), rCurrentProcessInfo,
                          [&](std::size_t g, const Kinematics&, ConstitutiveLaw::Parameters& values) {
                              mLaws[g]->FinalizeMaterialResponse(values, GetStressMeasure());
@@ -123,6 +140,7 @@ template <int TDim, int TNumNodes, int TStrainSize>
 void BaseSolidElement<TDim, TNumNodes, TStrainSize>::CalculateAll(Matrix* pLeftHandSide, Vector* pRightHandSide,
                                                                   const ProcessInfo& rCurrentProcessInfo) {
     CheckInitialized();
+    if (mKeepsStiffness) return CalculateFromKeptStiffness(pLeftHandSide, pRightHandSide, rCurrentProcessInfo);
     Eigen::Matrix<double, kDofs, kDofs> lhs = Eigen::Matrix<double, kDofs, kDofs>::Zero();
     Eigen::Matrix<double, kDofs, 1> rhs = Eigen::Matrix<double, kDofs, 1>::Zero();
     const BodyForce body = pRightHandSide ? ComputeBodyForce() : BodyForce{};
@@ -134,11 +152,7 @@ void BaseSolidElement<TDim, TNumNodes, TStrainSize>::CalculateAll(Matrix* pLeftH
         const StrainVector stress = values.stress_vector;
         if (pRightHandSide) {
             rhs.noalias() -= k.weight * (k.B.transpose() * stress);
-            if (body.density != 0.0) {
-                const Eigen::Matrix<double, 1, TDim> b = body.density * (body.constant + k.N.transpose() * body.nodal);
-                for (int i = 0; i < TNumNodes; ++i)
-                    rhs.template segment<TDim>(i * TDim) += (k.body_weight * k.N[i]) * b.transpose();
-            }
+            AddBodyForce(body, k, rhs);
         }
         if (pLeftHandSide) {
             const Eigen::Matrix<double, TStrainSize, TStrainSize> D = values.constitutive_matrix;
@@ -148,6 +162,58 @@ void BaseSolidElement<TDim, TNumNodes, TStrainSize>::CalculateAll(Matrix* pLeftH
     }
     if (pLeftHandSide) *pLeftHandSide = lhs;
     if (pRightHandSide) *pRightHandSide = rhs;
+}
+
+template <int TDim, int TNumNodes, int TStrainSize>
+void BaseSolidElement<TDim, TNumNodes, TStrainSize>::CalculateFromKeptStiffness(Matrix* pLeftHandSide,
+                                                                                Vector* pRightHandSide,
+                                                                                const ProcessInfo& rCurrentProcessInfo) {
+    using DofMatrix = Eigen::Matrix<double, kDofs, kDofs>;
+    constexpr std::size_t packed_size = kDofs * (kDofs + 1) / 2;
+    if (mKeptStiffness.empty()) {
+        DofMatrix K = DofMatrix::Zero();
+        ConstitutiveLaw::Parameters values = LawParameters(rCurrentProcessInfo);
+        values.compute_constitutive_tensor = true;
+        Kinematics k;
+        for (std::size_t g = 0; g < NumberOfIntegrationPoints(); ++g) {
+            PointResponse(g, GetStressMeasure(), rCurrentProcessInfo, k, values);
+            const Eigen::Matrix<double, TStrainSize, TStrainSize> D = values.constitutive_matrix;
+            K.noalias() += k.weight * (k.B.transpose() * D * k.B);
+        }
+        mKeptStiffness.resize(packed_size);
+        std::size_t entry = 0;
+        for (int j = 0; j < kDofs; ++j)  // the mean of the two triangles: symmetric to the last bit
+            for (int i = 0; i <= j; ++i) mKeptStiffness[entry++] = 0.5 * (K(i, j) + K(j, i));
+    }
+    DofMatrix K;
+    std::size_t entry = 0;
+    for (int j = 0; j < kDofs; ++j)
+        for (int i = 0; i <= j; ++i) K(i, j) = K(j, i) = mKeptStiffness[entry++];
+    if (pLeftHandSide) *pLeftHandSide = K;
+    if (pRightHandSide == nullptr) return;
+    const NodalMatrix displacement = NodalDisplacements(0);
+    Eigen::Matrix<double, kDofs, 1> u;
+    for (int i = 0; i < TNumNodes; ++i) u.template segment<TDim>(i * TDim) = displacement.row(i).transpose();
+    Eigen::Matrix<double, kDofs, 1> rhs = -(K * u);
+    const BodyForce body = ComputeBodyForce();
+    if (body.density != 0.0 && !(body.constant.isZero(0.0) && body.nodal.isZero(0.0))) {
+        Kinematics k;
+        for (std::size_t g = 0; g < NumberOfIntegrationPoints(); ++g) {
+            ComputeKinematics(g, k);
+            AddBodyForce(body, k, rhs);
+        }
+    }
+    *pRightHandSide = rhs;
+}
+
+template <int TDim, int TNumNodes, int TStrainSize>
+void BaseSolidElement<TDim, TNumNodes, TStrainSize>::AddBodyForce(const BodyForce& body, const Kinematics& rKinematics,
+                                                                  Eigen::Matrix<double, kDofs, 1>& rRightHandSide) {
+    if (body.density == 0.0) return;
+    const Eigen::Matrix<double, 1, TDim> b =
+        body.density * (body.constant + rKinematics.N.transpose() * body.nodal);
+    for (int i = 0; i < TNumNodes; ++i)
+        rRightHandSide.template segment<TDim>(i * TDim) += (rKinematics.body_weight * rKinematics.N[i]) * b.transpose();
 }
 
 template <int TDim, int TNumNodes, int TStrainSize>
@@ -222,6 +288,7 @@ BaseSolidElement<TDim, TNumNodes, TStrainSize>::ComputeBodyForce() const {
     body.density = properties.Has(DENSITY) ? properties.GetValue(DENSITY) : 0.0;
     body.constant.setZero();
     body.nodal.setZero();
+    if (body.density == 0.0) return body;  // no body force whatever the accelerations
     if (properties.Has(VOLUME_ACCELERATION))
         body.constant = properties.GetValue(VOLUME_ACCELERATION).template head<TDim>().transpose();
     const Geometry& geometry = GetGeometry();

@@ -130,6 +130,9 @@ public:
     int Check(const ProcessInfo& rCurrentProcessInfo) const override;
     /// @brief e.g. "TotalLagrangianElement2D4N #3 (Quadrilateral2D4)".
     std::string Info() const override;
+    /// @brief "" for kinematics on the initial configuration with a linear law (IsLinear); then the element keeps
+    ///        its stiffness from its first evaluation in a solution step to the next InitializeSolutionStep.
+    std::string WhyStiffnessVaries() const override;
 
     // What a formulation's kinematics read (ComputeSolidKinematics, solid_element.h).
     /// @brief The reference data of integration point @p point (0 ≤ point < its count).
@@ -159,6 +162,8 @@ protected:
     virtual bool UseElementProvidedStrain() const = 0;
     /// True for the finite-strain formulations (adds the geometric stiffness K_g).
     virtual bool UsesGeometricStiffness() const = 0;
+    /// True if B and the weights depend on the initial configuration only (the small-displacement formulations).
+    virtual bool HasConstantKinematics() const = 0;
     /// @brief Kinematics at integration point @p point from the current nodal state.
     /// @param[in] point index of the integration point, 0 ≤ point < NumberOfIntegrationPoints()
     /// @param[out] rKinematics every field, including weight and body_weight
@@ -181,6 +186,10 @@ private:
     };
 
     void CalculateAll(Matrix* pLeftHandSide, Vector* pRightHandSide, const ProcessInfo& rCurrentProcessInfo);
+    /// LHS = K and RHS = f_body − K u from the kept K (computed here on the first call of the step): the local
+    /// system of constant kinematics with linear laws, without a law evaluation (docs/theory/solid_elements.md).
+    void CalculateFromKeptStiffness(Matrix* pLeftHandSide, Vector* pRightHandSide,
+                                    const ProcessInfo& rCurrentProcessInfo);
     void EvaluateLaw(std::size_t point, const Kinematics& rKinematics, StressMeasure measure,
                      ConstitutiveLaw::Parameters& rValues) const;
     /// Kinematics and law response at @p point; an InvertedElementError leaves with this element's id and TIME.
@@ -191,6 +200,9 @@ private:
     template <class TVisit>
     void ForEachPointResponse(StressMeasure measure, const ProcessInfo& rCurrentProcessInfo, TVisit&& visit);
     BodyForce ComputeBodyForce() const;
+    /// RHS += Σ_i body_weight N_i b at one integration point (nothing when ρ = 0).
+    static void AddBodyForce(const BodyForce& body, const Kinematics& rKinematics,
+                             Eigen::Matrix<double, kDofs, 1>& rRightHandSide);
     static void AddGeometricStiffness(const Kinematics& rKinematics, const StrainVector& stress,
                                       Eigen::Matrix<double, kDofs, kDofs>& rLeftHandSide);
     Eigen::Matrix<double, TNumNodes, TNumNodes> ConsistentNodalMass() const;
@@ -208,6 +220,10 @@ private:
 
     std::vector<ReferencePoint> mReferencePoints;
     std::vector<ConstitutiveLaw::Pointer> mLaws;  ///< one clone per integration point, owned
+    bool mKeepsStiffness = false;  ///< constant kinematics and linear laws (set by Initialize)
+    /// The kept stiffness, upper triangle packed column by column (kDofs(kDofs + 1)/2 values; 2D Q4: 288 B, 3D
+    /// hexahedron: 2.4 kB); empty until the first evaluation of a step, emptied by InitializeSolutionStep.
+    std::vector<double> mKeptStiffness;
 };
 
 #define CONTACT_APP_BASE_SOLID_EXTERN(TDim, TNumNodes, Geometry, Suffix) \

@@ -20,15 +20,16 @@ struct SolidFormulationTraits {
     ConstitutiveLaw::StressMeasure measure;     ///< stress measure of the residual
     bool element_provided_strain;               ///< the element computes the strain handed to the law
     bool geometric_stiffness;                   ///< finite strain: adds K_g
+    bool constant_kinematics;                   ///< B and weights from the initial configuration only
 };
 
 // clang-format off
 /// Indexed by SolidFormulation.
 inline constexpr SolidFormulationTraits kSolidFormulations[] = {
-    {"SmallDisplacementElement",       ConstitutiveLaw::StressMeasure::PK2, true,  false},
-    {"TotalLagrangianElement",         ConstitutiveLaw::StressMeasure::PK2, false, true},
-    {"AxisymSmallDisplacementElement", ConstitutiveLaw::StressMeasure::PK2, true,  false},
-    {"AxisymTotalLagrangianElement",   ConstitutiveLaw::StressMeasure::PK2, true,  true},
+    {"SmallDisplacementElement",       ConstitutiveLaw::StressMeasure::PK2, true,  false, true},
+    {"TotalLagrangianElement",         ConstitutiveLaw::StressMeasure::PK2, false, true,  false},
+    {"AxisymSmallDisplacementElement", ConstitutiveLaw::StressMeasure::PK2, true,  false, true},
+    {"AxisymTotalLagrangianElement",   ConstitutiveLaw::StressMeasure::PK2, true,  true,  false},
 };
 // clang-format on
 
@@ -57,6 +58,7 @@ protected:
     StressMeasure GetStressMeasure() const override { return kTraits.measure; }
     bool UseElementProvidedStrain() const override { return kTraits.element_provided_strain; }
     bool UsesGeometricStiffness() const override { return kTraits.geometric_stiffness; }
+    bool HasConstantKinematics() const override { return kTraits.constant_kinematics; }
     /// The formulation's kinematics (solid_element.cpp).
     void ComputeKinematics(std::size_t point, Kinematics& rKinematics) const override;
 };

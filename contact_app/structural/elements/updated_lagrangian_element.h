@@ -45,6 +45,7 @@ protected:
     StressMeasure GetStressMeasure() const override { return StressMeasure::Cauchy; }
     bool UseElementProvidedStrain() const override { return false; }
     bool UsesGeometricStiffness() const override { return true; }
+    bool HasConstantKinematics() const override { return false; }
     /// @throws ConvergenceError if the element is inverted in the current configuration
     void ComputeKinematics(std::size_t point, Kinematics& rKinematics) const override;
 
