@@ -78,14 +78,14 @@ LEGACY_KEYS: tuple[LegacyKey, ...] = (
         "block_builder",
         "builder_and_solver_settings.type",
         'true → "block", false → "elimination"',
-        converter="MechanicalSolver._ConvertDeprecatedSettings",
+        converter="settings_validation.convert_deprecated_settings",
     ),
     LegacyKey(
         "solver_settings",
         "line_search",
         "solving_strategy_settings.type",
         'true → "line_search"; false is the default',
-        converter="MechanicalSolver._ConvertDeprecatedSettings",
+        converter="settings_validation.convert_deprecated_settings",
     ),
     LegacyKey(
         "model_import_settings",

@@ -24,8 +24,8 @@ from contact_app.analysis.solvers.convergence_criteria_factory import (
     ConvergenceCriterion,
     check_criterion_name,
 )
-from contact_app.analysis.solvers.mechanical_solver import (
-    bulk_not_linear,
+from contact_app.analysis.solvers.mechanical_solver import bulk_not_linear
+from contact_app.analysis.solvers.settings_validation import (
     is_iterative,
     static_condensation_mode,
 )

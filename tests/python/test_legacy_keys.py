@@ -11,7 +11,8 @@ import pytest
 
 import contact_app as ca
 from contact_app.analysis.reporting import Reporter
-from contact_app.analysis.solvers.mechanical_solver import MODEL_IMPORT_KEYS, MechanicalSolver
+from contact_app.analysis.solvers.mechanical_solver import MechanicalSolver
+from contact_app.analysis.solvers.settings_validation import MODEL_IMPORT_KEYS
 from contact_app.legacy_keys import LEGACY_KEYS, convert_legacy_keys
 from contact_app.parameters import Parameters
 from contact_app.processes.vtk_output_process import DEFAULTS as VTK_DEFAULTS
