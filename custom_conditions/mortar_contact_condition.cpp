@@ -154,23 +154,21 @@ bool MORTAR_CLASS::GetNodalNormalCoupling(int j, Matrix& rForcePerNormal) const 
 }
 
 MORTAR_TEMPLATE
-void MORTAR_CLASS::RecordForcePerNormal(const NodeCoordinates<double, TDim, TNS>& x1,
-                                        const SpatialVector<double, TDim>& slave_normal,
-                                        const NodeCoordinates<double, TDim, TNM>& x2,
-                                        const NodeCoordinates<double, TDim, TNS>& normals,
-                                        const MultiplierVector& lambda,
-                                        const MortarIntegrator<TDim, TNS, TNM, double>& integrator,
-                                        const ProcessInfo& rCurrentProcessInfo) {
+void MORTAR_CLASS::RecordForcePerNormal(
+    const NodeCoordinates<double, TDim, TNS>& x1, const NodeCoordinates<double, TDim, TNM>& x2,
+    const NodeCoordinates<double, TDim, TNS>& normals, const MultiplierVector& lambda,
+    const MortarPairIntegration<Dual<NumCoordinateDofs>, TDim, TNS, TNM>& pair,
+    const std::vector<MortarGaussPoint<Dual<NumCoordinateDofs>, TDim, TNS, TNM>>& points,
+    const ProcessInfo& rCurrentProcessInfo) {
     // The normals take the first d n_s derivative slots of the AD types the tangent already uses (d n_s ≤ d(n_s + n_m)
     // ≤ MatrixSize), so this pass instantiates no new AD type. Of the pair's operators only M reads the nodal normals
-    // (through the projection onto the master); the rest is integrated in double.
+    // (through the projection onto the master): it is projected again from the main pass's Gauss points, whose other
+    // values (D, the dual basis, the weights) do not depend on them.
     using Coordinate = Dual<NumCoordinateDofs>;
     constexpr int normal_dofs = TDim * TNS;
     const auto seeded = Seed<NumCoordinateDofs>(normals, 0);
     Eigen::Matrix<Coordinate, TNS, TNM> master_operator;
-    const auto pair = IntegrateMortarPairOverNormals<TDim, TNS, TNM>(integrator, x1, slave_normal, x2, seeded, true,
-                                                                     master_operator);
-    if (!pair.used) return;
+    MasterOperatorOverNormals<TDim, TNS, TNM>(points, pair.dual, x2, seeded, master_operator);
     const auto widen = [](const auto& m) {
         Eigen::Matrix<ADScalar, std::decay_t<decltype(m)>::RowsAtCompileTime, std::decay_t<decltype(m)>::ColsAtCompileTime>
             result;
@@ -182,7 +180,7 @@ void MORTAR_CLASS::RecordForcePerNormal(const NodeCoordinates<double, TDim, TNS>
     state.x1 = x1.template cast<ADScalar>();
     state.x2 = x2.template cast<ADScalar>();
     state.normals = widen(seeded);
-    state.operators.D = pair.operators.D.template cast<ADScalar>();
+    state.operators.D = Values(pair.operators.D).template cast<ADScalar>();
     state.operators.M = widen(master_operator);
     for (int i = 0; i < NumMultipliers; ++i) state.multipliers[i] = ADScalar(lambda[i]);
     LocalVector<ADScalar> rhs;
@@ -260,6 +258,7 @@ void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Pr
     }
     const MortarIntegrator<TDim, TNS, TNM, Coordinate> integrator(integration, segmentation);
     MortarPairIntegration<Coordinate, TDim, TNS, TNM> pair;
+    std::vector<MortarGaussPoint<Coordinate, TDim, TNS, TNM>> points;  // kept for the normal pass
     // Normals that follow the iterate, once the sets settled: the face-centre NORMAL is this face's own (differentiated
     // here), the nodal ones are held here and their derivative recorded for NodalNormalCoupling. A penalty pair (the
     // only kind that couples them) without an active slave node adds nothing, so it has nothing to record.
@@ -277,7 +276,7 @@ void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Pr
         const SpatialVector<Coordinate, TDim> center =
             WithValues(FaceCenterUnitNormal<TDim, TNS, Coordinate>(seeded_x1), slave_normal);
         const NodeCoordinates<Coordinate, TDim, TNS> held = normals.template cast<Coordinate>();
-        pair = IntegrateMortarPair<TDim, TNS, TNM>(integrator, seeded_x1, center, seeded_x2, held, true);
+        pair = IntegrateMortarPair<TDim, TNS, TNM>(integrator, seeded_x1, center, seeded_x2, held, true, &points);
         state.normals = normals.template cast<ADScalar>();
     } else {
         pair = IntegrateMortarPair<TDim, TNS, TNM>(integrator, seeded_x1, slave_normal, seeded_x2, normals, true);
@@ -295,9 +294,7 @@ void MORTAR_CLASS::CalculateConditionSystem(Matrix* pLhs, Vector* pRhs, const Pr
     operator_values.M = Values(pair.operators.M);
     InitializeResidual(operator_values, rCurrentProcessInfo);
     // Before the main pass: a family that records coupling terms in its AD residual keeps the main pass's.
-    if (normals_follow)
-        RecordForcePerNormal(x1, slave_normal, x2, normals, lambda,
-                             MortarIntegrator<TDim, TNS, TNM, double>(integration, segmentation), rCurrentProcessInfo);
+    if (normals_follow) RecordForcePerNormal(x1, x2, normals, lambda, pair, points, rCurrentProcessInfo);
     LocalVector<ADScalar> rhs;
     for (int i = 0; i < MatrixSize; ++i) rhs[i] = ADScalar(0.0);
     AddResidual(state, rCurrentProcessInfo, rhs);

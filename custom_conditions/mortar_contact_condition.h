@@ -129,12 +129,12 @@ private:
 
     /// The second AD pass of a tangent evaluation whose nodal normals follow the iterate: the residual with the normals
     /// seeded (coordinates and multipliers constant; M the only operator that reads them) into mForcePerNormal.
-    void RecordForcePerNormal(const NodeCoordinates<double, TDim, TNumNodes>& x1,
-                              const SpatialVector<double, TDim>& slave_normal,
-                              const NodeCoordinates<double, TDim, TNumNodesMaster>& x2,
-                              const NodeCoordinates<double, TDim, TNumNodes>& normals, const MultiplierVector& lambda,
-                              const MortarIntegrator<TDim, TNumNodes, TNumNodesMaster, double>& integrator,
-                              const ProcessInfo& rCurrentProcessInfo);
+    void RecordForcePerNormal(
+        const NodeCoordinates<double, TDim, TNumNodes>& x1, const NodeCoordinates<double, TDim, TNumNodesMaster>& x2,
+        const NodeCoordinates<double, TDim, TNumNodes>& normals, const MultiplierVector& lambda,
+        const MortarPairIntegration<Dual<NumCoordinateDofs>, TDim, TNumNodes, TNumNodesMaster>& pair,
+        const std::vector<MortarGaussPoint<Dual<NumCoordinateDofs>, TDim, TNumNodes, TNumNodesMaster>>& points,
+        const ProcessInfo& rCurrentProcessInfo);
     /// The InternalError raised by the methods only the families implement.
     InternalError NotInBase(const char* method) const;
 };

@@ -126,10 +126,13 @@ bool InverseMap(const std::array<Vec2<T>, TNumNodes>& q, const Vec2<T>& p, Vec2<
 
 /// Local coordinates η of the point where the ray x + s·dir meets the face (Line2D2 in 2D, triangle or
 /// bilinear quadrilateral in 3D): solves x_face(η) − s·dir = x. Values first, then one step in T.
+/// @param[in] pStart η to start Newton from (the face centroid if null): a projection already solved for the same
+///            values converges in one iteration
 /// @return false if the ray is parallel to the face or Newton fails
 template <int TNumNodes, int TDim, class T>
 bool ProjectAlongDirection(const NodeCoordinates<T, TDim, TNumNodes>& face, const SpatialVector<T, TDim>& x,
-                           const SpatialVector<T, TDim>& dir, Eigen::Matrix<T, TDim - 1, 1>& eta) {
+                           const SpatialVector<T, TDim>& dir, Eigen::Matrix<T, TDim - 1, 1>& eta,
+                           const Eigen::Matrix<double, TDim - 1, 1>* pStart = nullptr) {
     using Square = Eigen::Matrix<double, TDim, TDim>;
     // Newton on coordinates relative to the face's first node: in absolute ones the residual carries round-off of
     // ε|x|, and where |x| is large against the face (a model away from the origin) the steps stalled above the
@@ -140,7 +143,11 @@ bool ProjectAlongDirection(const NodeCoordinates<T, TDim, TNumNodes>& face, cons
     const double scale = fv.rowwise().norm().maxCoeff();
     if (!(scale > 0.0) || !std::isfinite(scale) || !(dv.norm() > 0.0)) return false;
     SpatialVector<double, TDim> u = SpatialVector<double, TDim>::Zero();
-    u.template head<TDim - 1>() = FaceCentroid<TNumNodes>();
+    u.template head<TDim - 1>() = pStart ? *pStart : FaceCentroid<TNumNodes>();
+    if (pStart) {  // the ray parameter of the face point at the start: no step is left when the start is the solution
+        const SpatialVector<double, TDim> offset = fv.transpose() * FaceShapeFunctions<TNumNodes, double>(*pStart) - xv;
+        u[TDim - 1] = offset.dot(dv) / dv.squaredNorm();
+    }
     bool converged = false;
     for (int iteration = 0; iteration < 30 && !converged; ++iteration) {
         const Eigen::Matrix<double, TDim - 1, 1> e = u.template head<TDim - 1>();

@@ -87,6 +87,7 @@ void MortarIntegrator<TDim, TNS, TNM, T>::ComputeGaussPoints(
             point.normal = interpolated / length;
             Eigen::Matrix<T, TDim - 1, 1> eta;
             if (!detail::ProjectAlongDirection<TNM, TDim, T>(master, point.x1, point.normal, eta)) continue;
+            point.eta = eta;
             point.N2 = detail::FaceShapeFunctions<TNM, T>(eta);
             point.weight = ip.weight * det_j;
             if (mSettings.axisymmetric_thickness > 0.0)
@@ -170,9 +171,36 @@ MortarPairIntegration<T, TDim, TNS, TNM> IntegrateMortarPair(const MortarIntegra
                                                            const SpatialVector<TNormal, TDim>& slave_normal,
                                                            const NodeCoordinates<T, TDim, TNM>& master,
                                                            const NodeCoordinates<TNormal, TDim, TNS>& nodal_normals,
-                                                           bool dual_lm) {
+                                                           bool dual_lm,
+                                                           std::vector<MortarGaussPoint<T, TDim, TNS, TNM>>* pPoints) {
     std::vector<typename MortarIntegrator<TDim, TNS, TNM, T>::GaussPoint> points;
-    return IntegrateMortarPairAt(integrator, slave, slave_normal, master, nodal_normals, dual_lm, points);
+    return IntegrateMortarPairAt(integrator, slave, slave_normal, master, nodal_normals, dual_lm,
+                                 pPoints ? *pPoints : points);
+}
+
+template <int TDim, int TNS, int TNM, class T, class TNormal>
+void MasterOperatorOverNormals(const std::vector<MortarGaussPoint<T, TDim, TNS, TNM>>& points,
+                               const DualBasis<T, TNS>& dual, const NodeCoordinates<double, TDim, TNM>& master,
+                               const NodeCoordinates<TNormal, TDim, TNS>& nodal_normals,
+                               Eigen::Matrix<TNormal, TNS, TNM>& rM) {
+    rM.setConstant(TNormal(0.0));
+    const NodeCoordinates<TNormal, TDim, TNM> face = master.template cast<TNormal>();
+    const Eigen::Matrix<double, TNS, TNS> Ae = Values(dual.Ae);
+    for (const auto& p : points) {
+        const Eigen::Matrix<double, TNS, 1> N1 = Values(p.N1);
+        const SpatialVector<TNormal, TDim> interpolated = nodal_normals.transpose() * N1.template cast<TNormal>();
+        const SpatialVector<TNormal, TDim> normal = interpolated / detail::Norm<TNormal>(interpolated);
+        const SpatialVector<TNormal, TDim> x1 = Values(p.x1).template cast<TNormal>();
+        const Eigen::Matrix<double, TDim - 1, 1> start = Values(p.eta);
+        Eigen::Matrix<TNormal, TDim - 1, 1> eta;
+        // Succeeds: it starts from the solution the integration found for the same values.
+        if (!detail::ProjectAlongDirection<TNM, TDim, TNormal>(face, x1, normal, eta, &start)) continue;
+        const Eigen::Matrix<double, TNS, 1> phi_w = (dual.dual ? Eigen::Matrix<double, TNS, 1>(Ae * N1) : N1) *
+                                                    Value(p.weight);
+        const Eigen::Matrix<TNormal, TNM, 1> n2 = detail::FaceShapeFunctions<TNM, TNormal>(eta);
+        for (int j = 0; j < TNS; ++j)
+            for (int l = 0; l < TNM; ++l) rM(j, l) += phi_w[j] * n2[l];
+    }
 }
 
 template <int TDim, int TNS, int TNM, class TNormal>
@@ -183,21 +211,7 @@ MortarPairIntegration<double, TDim, TNS, TNM> IntegrateMortarPairOverNormals(
     std::vector<typename MortarIntegrator<TDim, TNS, TNM, double>::GaussPoint> points;
     const NodeCoordinates<double, TDim, TNS> normal_values = Values(nodal_normals);
     const auto pair = IntegrateMortarPairAt(integrator, slave, slave_normal, master, normal_values, dual_lm, points);
-    rM.setConstant(TNormal(0.0));
-    const NodeCoordinates<TNormal, TDim, TNM> face = master.template cast<TNormal>();
-    for (const auto& p : points) {
-        const SpatialVector<TNormal, TDim> interpolated = nodal_normals.transpose() * p.N1.template cast<TNormal>();
-        const SpatialVector<TNormal, TDim> normal = interpolated / detail::Norm<TNormal>(interpolated);
-        Eigen::Matrix<TNormal, TDim - 1, 1> eta;
-        // Succeeds: it decides on the values, as the projection in double that kept this point.
-        if (!detail::ProjectAlongDirection<TNM, TDim, TNormal>(face, p.x1.template cast<TNormal>(), normal, eta))
-            continue;
-        const Eigen::Matrix<double, TNS, 1> phi_w =
-            (pair.dual.dual ? Eigen::Matrix<double, TNS, 1>(pair.dual.Ae * p.N1) : p.N1) * p.weight;
-        const Eigen::Matrix<TNormal, TNM, 1> n2 = detail::FaceShapeFunctions<TNM, TNormal>(eta);
-        for (int j = 0; j < TNS; ++j)
-            for (int l = 0; l < TNM; ++l) rM(j, l) += phi_w[j] * n2[l];
-    }
+    MasterOperatorOverNormals<TDim, TNS, TNM>(points, pair.dual, master, nodal_normals, rM);
     return pair;
 }
 
@@ -209,7 +223,8 @@ MortarPairIntegration<double, TDim, TNS, TNM> IntegrateMortarPairOverNormals(
         const NodeCoordinates<TN, D, NS>&, const MortarCells<T, D>&, std::vector<GaussPoint>&) const;        \
     template MortarPairIntegration<T, D, NS, NM> IntegrateMortarPair<D, NS, NM, T, TN>(                       \
         const MortarIntegrator<D, NS, NM, T>&, const NodeCoordinates<T, D, NS>&, const SpatialVector<TN, D>&, \
-        const NodeCoordinates<T, D, NM>&, const NodeCoordinates<TN, D, NS>&, bool);
+        const NodeCoordinates<T, D, NM>&, const NodeCoordinates<TN, D, NS>&, bool,                            \
+        std::vector<MortarGaussPoint<T, D, NS, NM>>*);
 #define CONTACT_APP_INSTANTIATE_INTEGRATION(A, D, NS, NM)                                                      \
     template class MortarIntegrator<D, NS, NM, double>;                                                        \
     template class MortarIntegrator<D, NS, NM, Dual<D*(NS + NM)>>;                                             \
@@ -219,7 +234,11 @@ MortarPairIntegration<double, TDim, TNS, TNM> IntegrateMortarPairOverNormals(
     template MortarPairIntegration<double, D, NS, NM> IntegrateMortarPairOverNormals<D, NS, NM, Dual<D*(NS + NM)>>( \
         const MortarIntegrator<D, NS, NM, double>&, const NodeCoordinates<double, D, NS>&,                      \
         const SpatialVector<double, D>&, const NodeCoordinates<double, D, NM>&,                                \
-        const NodeCoordinates<Dual<D*(NS + NM)>, D, NS>&, bool, Eigen::Matrix<Dual<D*(NS + NM)>, NS, NM>&);
+        const NodeCoordinates<Dual<D*(NS + NM)>, D, NS>&, bool, Eigen::Matrix<Dual<D*(NS + NM)>, NS, NM>&);      \
+    template void MasterOperatorOverNormals<D, NS, NM, Dual<D*(NS + NM)>, Dual<D*(NS + NM)>>(                   \
+        const std::vector<MortarGaussPoint<Dual<D*(NS + NM)>, D, NS, NM>>&, const DualBasis<Dual<D*(NS + NM)>, NS>&, \
+        const NodeCoordinates<double, D, NM>&, const NodeCoordinates<Dual<D*(NS + NM)>, D, NS>&,                \
+        Eigen::Matrix<Dual<D*(NS + NM)>, NS, NM>&);
 CONTACT_APP_FOR_EACH_MORTAR_PAIR(CONTACT_APP_INSTANTIATE_INTEGRATION, ~)
 #undef CONTACT_APP_INSTANTIATE_INTEGRATION
 #undef CONTACT_APP_INSTANTIATE_INTEGRATION_N

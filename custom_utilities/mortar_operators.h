@@ -17,6 +17,7 @@ struct MortarGaussPoint {
     SpatialVector<T, TDim> x1;                ///< point on the slave face
     SpatialVector<T, TDim> normal;            ///< unit GP normal, normalised Σ N1_i n_i
     T weight;                                 ///< w_gp · det J_cell · (2π r / t if axisymmetric)
+    Eigen::Matrix<T, TDim - 1, 1> eta;        ///< master local coordinates of the projected point (N2 = N(η))
 };
 
 /// @brief Gauss rule on one integration cell from INTEGRATION_ORDER_CONTACT (GetIntegrationMethod table):
@@ -92,12 +93,32 @@ struct MortarPairIntegration {
 /// @param[in] master n_m × d current master coordinates
 /// @param[in] nodal_normals n_s × d unit nodal NORMAL of the slave nodes
 /// @param[in] dual_lm request dual multipliers (falls back to standard ones when Ae fails)
+/// @param[out] pPoints if not null, receives the Gauss points (for MasterOperatorOverNormals)
 template <int TDim, int TNumNodes, int TNumNodesMaster, class T, class TNormal>
 MortarPairIntegration<T, TDim, TNumNodes, TNumNodesMaster> IntegrateMortarPair(
     const MortarIntegrator<TDim, TNumNodes, TNumNodesMaster, T>& integrator,
     const NodeCoordinates<T, TDim, TNumNodes>& slave, const SpatialVector<TNormal, TDim>& slave_normal,
     const NodeCoordinates<T, TDim, TNumNodesMaster>& master,
-    const NodeCoordinates<TNormal, TDim, TNumNodes>& nodal_normals, bool dual_lm);
+    const NodeCoordinates<TNormal, TDim, TNumNodes>& nodal_normals, bool dual_lm,
+    std::vector<MortarGaussPoint<T, TDim, TNumNodes, TNumNodesMaster>>* pPoints = nullptr);
+
+/// @brief M as a function of the slave nodal normals alone, the coordinates held, on the Gauss points of a pair
+/// already integrated (their values are read, whatever their scalar): M_jl = Σ w Φ_j N2_l(η) with x2(η) − s ν = x1 and
+/// ν = Σ N1_i n_i / |Σ N1_i n_i|. The cells, w, N1, the dual basis and D read only the slave face and its face-centre
+/// normal; only the projection onto the master is repeated in TNormal, from each point's η (one Newton iteration): a
+/// fraction of the cost of integrating the pair again (docs/theory/mortar.md §7 "Normals that follow the iterate").
+/// @param[in] points the pair's Gauss points (IntegrateMortarPair with pPoints)
+/// @param[in] dual the pair's dual basis (its values are read)
+/// @param[in] master n_m × d current master coordinates
+/// @param[in] nodal_normals n_s × d unit nodal NORMAL of the slave nodes, with the derivatives wanted (their values those
+///            the points were integrated with)
+/// @param[out] rM M in TNormal
+template <int TDim, int TNumNodes, int TNumNodesMaster, class T, class TNormal>
+void MasterOperatorOverNormals(const std::vector<MortarGaussPoint<T, TDim, TNumNodes, TNumNodesMaster>>& points,
+                              const DualBasis<T, TNumNodes>& dual,
+                              const NodeCoordinates<double, TDim, TNumNodesMaster>& master,
+                              const NodeCoordinates<TNormal, TDim, TNumNodes>& nodal_normals,
+                              Eigen::Matrix<TNormal, TNumNodes, TNumNodesMaster>& rM);
 
 /// @brief IntegrateMortarPair in double, and M as a function of the slave nodal normals alone, the coordinates held:
 /// M_jl = Σ w Φ_j N2_l(η) with x2(η) − s ν = x1 and ν = Σ N1_i n_i / |Σ N1_i n_i|. The cells, w, N1, the dual basis and
