@@ -158,7 +158,7 @@ template <class T, int TDim, int TNS, int TNM, class TState, class TRecord>
 void RecordNodalGapCoupling(const TState& s, int j, const Eigen::Matrix<double, TDim, 1>& force_per_gap,
                             const T& penalty_gap, TRecord& record) {
     SpreadForceValues<TDim, TNS, TNM>(s, j, force_per_gap, record.force_per_gap[j]);
-    record.gap_gradient[j] = penalty_gap.Derivatives();
+    record.SetGapGradient(j, penalty_gap.Derivatives());
     record.coupled[j] = true;
 }
 

@@ -102,6 +102,11 @@ void MORTAR_CLASS::AddResidual(const State<ADScalar>&, const ProcessInfo&, Local
 }
 
 MORTAR_TEMPLATE
+void MORTAR_CLASS::AddResidual(const State<NormalScalar>&, const ProcessInfo&, LocalVector<NormalScalar>&) const {
+    throw NotInBase("AddResidual over the nodal normals");
+}
+
+MORTAR_TEMPLATE
 int MORTAR_CLASS::Check(const ProcessInfo& rCurrentProcessInfo) const {
     PairedCondition::Check(rCurrentProcessInfo);
     const Geometry& slave = GetParentGeometry();
@@ -160,33 +165,24 @@ void MORTAR_CLASS::RecordForcePerNormal(
     const MortarPairIntegration<Dual<NumCoordinateDofs>, TDim, TNS, TNM>& pair,
     const std::vector<MortarGaussPoint<Dual<NumCoordinateDofs>, TDim, TNS, TNM>>& points,
     const ProcessInfo& rCurrentProcessInfo) {
-    // The normals take the first d n_s derivative slots of the AD types the tangent already uses (d n_s ≤ d(n_s + n_m)
-    // ≤ MatrixSize), so this pass instantiates no new AD type. Of the pair's operators only M reads the nodal normals
-    // (through the projection onto the master): it is projected again from the main pass's Gauss points, whose other
-    // values (D, the dual basis, the weights) do not depend on them.
-    using Coordinate = Dual<NumCoordinateDofs>;
-    constexpr int normal_dofs = TDim * TNS;
-    const auto seeded = Seed<NumCoordinateDofs>(normals, 0);
-    Eigen::Matrix<Coordinate, TNS, TNM> master_operator;
+    // A Dual over the d n_s normal components alone: the coordinates and multipliers are constants of this pass. Of
+    // the pair's operators only M reads the nodal normals (through the projection onto the master): it is projected
+    // again from the main pass's Gauss points, whose other values (D, the dual basis, the weights) do not depend on
+    // them.
+    const auto seeded = Seed<TDim * TNS>(normals, 0);
+    Eigen::Matrix<NormalScalar, TNS, TNM> master_operator;
     MasterOperatorOverNormals<TDim, TNS, TNM>(points, pair.dual, x2, seeded, master_operator);
-    const auto widen = [](const auto& m) {
-        Eigen::Matrix<ADScalar, std::decay_t<decltype(m)>::RowsAtCompileTime, std::decay_t<decltype(m)>::ColsAtCompileTime>
-            result;
-        for (Eigen::Index r = 0; r < m.rows(); ++r)
-            for (Eigen::Index c = 0; c < m.cols(); ++c) result(r, c) = Embed<MatrixSize>(m(r, c));
-        return result;
-    };
-    State<ADScalar> state;
-    state.x1 = x1.template cast<ADScalar>();
-    state.x2 = x2.template cast<ADScalar>();
-    state.normals = widen(seeded);
-    state.operators.D = Values(pair.operators.D).template cast<ADScalar>();
-    state.operators.M = widen(master_operator);
-    for (int i = 0; i < NumMultipliers; ++i) state.multipliers[i] = ADScalar(lambda[i]);
-    LocalVector<ADScalar> rhs;
-    for (int i = 0; i < MatrixSize; ++i) rhs[i] = ADScalar(0.0);
+    State<NormalScalar> state;
+    state.x1 = x1.template cast<NormalScalar>();
+    state.x2 = x2.template cast<NormalScalar>();
+    state.normals = seeded;
+    state.operators.D = Values(pair.operators.D).template cast<NormalScalar>();
+    state.operators.M = master_operator;
+    for (int i = 0; i < NumMultipliers; ++i) state.multipliers[i] = NormalScalar(lambda[i]);
+    LocalVector<NormalScalar> rhs;
+    for (int i = 0; i < MatrixSize; ++i) rhs[i] = NormalScalar(0.0);
     AddResidual(state, rCurrentProcessInfo, rhs);
-    mForcePerNormal = Jacobian(rhs).template leftCols<normal_dofs>();
+    mForcePerNormal = Jacobian(rhs);
     AfterNormalPass();
 }
 

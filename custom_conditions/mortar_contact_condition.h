@@ -60,6 +60,8 @@ public:
     static constexpr int MatrixSize = MortarMatrixSize(TDim, TNumNodes, TFrictional, TNumNodesMaster);
     static constexpr int NumMultipliers = MatrixSize - NumCoordinateDofs;
     using ADScalar = Dual<MatrixSize>;
+    /// The AD scalar of the normal pass (RecordForcePerNormal): derivatives in the slave nodal normals only.
+    using NormalScalar = Dual<TDim * TNumNodes>;
     using MultiplierVector = Eigen::Matrix<double, NumMultipliers, 1>;
     template <class T>
     using State = MortarPairState<T, TDim, TNumNodes, TNumNodesMaster, MatrixSize>;
@@ -111,13 +113,18 @@ protected:
                              LocalVector<double>& rhs) const;
     virtual void AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
                              LocalVector<ADScalar>& rhs) const;
+    /// The residual over the slave nodal normals (the normal pass of a family that CouplesNodalNormals).
+    /// @throws InternalError in the base and in a family that does not couple them
+    virtual void AddResidual(const State<NormalScalar>& state, const ProcessInfo& rCurrentProcessInfo,
+                             LocalVector<NormalScalar>& rhs) const;
     /// Called once per evaluation after the pair is integrated, before AddResidual, with the values of D and M
     /// (non-const: the frictional families choose the objective / non-objective slip here and record it in
     /// MODIFIED). The default does nothing.
     virtual void InitializeResidual(const MortarOperators<double, TNumNodes, TNumNodesMaster>& operators,
                                     const ProcessInfo& rCurrentProcessInfo) {}
-    /// Called after the AD pass that seeds the nodal normals (RecordForcePerNormal), before the main one: a family
-    /// that records coupling terms in its AD residual keeps their normal derivatives here. The default does nothing.
+    /// Called after the AD pass over the nodal normals (RecordForcePerNormal), before the main one: a family that
+    /// records coupling terms in its AD residual marks their normal derivatives as this evaluation's. The default does
+    /// nothing.
     virtual void AfterNormalPass() {}
 
 private:

@@ -44,6 +44,7 @@ public:
     static constexpr bool HasVectorMultiplier =
         TFrictional == FrictionalCase::FRICTIONAL || TFrictional == FrictionalCase::FRICTIONLESS_COMPONENTS;
     using typename BaseType::ADScalar;
+    using typename BaseType::NormalScalar;
     template <class T>
     using State = typename BaseType::template State<T>;
     template <class T>
@@ -101,6 +102,9 @@ protected:
                      LocalVector<double>& rhs) const override;
     void AddResidual(const State<ADScalar>& state, const ProcessInfo& rCurrentProcessInfo,
                      LocalVector<ADScalar>& rhs) const override;
+    /// The same over the nodal normals: the penalty families without NV only (the others never couple them).
+    void AddResidual(const State<NormalScalar>& state, const ProcessInfo& rCurrentProcessInfo,
+                     LocalVector<NormalScalar>& rhs) const override;
 
 private:
     /// The start-of-step operators of a Coulomb family (nothing for a frictionless one).

@@ -33,6 +33,16 @@ void FAMILY_CLASS::AddResidual(const State<ADScalar>& state, const ProcessInfo& 
 }
 
 FAMILY_TEMPLATE
+void FAMILY_CLASS::AddResidual(const State<NormalScalar>& state, const ProcessInfo& rCurrentProcessInfo,
+                               LocalVector<NormalScalar>& rhs) const {
+    constexpr bool penalty = TF == FrictionalCase::FRICTIONLESS_PENALTY || TF == FrictionalCase::FRICTIONAL_PENALTY;
+    if constexpr (penalty && !TNV)
+        AddFamilyResidual(*this, state, rCurrentProcessInfo, rhs);
+    else
+        BaseType::AddResidual(state, rCurrentProcessInfo, rhs);  // InternalError: this family holds the normals
+}
+
+FAMILY_TEMPLATE
 void FAMILY_CLASS::Initialize(const ProcessInfo& rCurrentProcessInfo) {
     BaseType::Initialize(rCurrentProcessInfo);
     if constexpr (IsFrictional) mPreviousMortarOperators.Reset();

@@ -62,15 +62,22 @@ struct NodalGapCouplingRecord {
         reads_slip.fill(false);
         normals_recorded = false;
     }
-    /// After the AD pass that seeds the nodal normals in the first d n_s derivative slots (the main pass follows and
-    /// overwrites the gradients in the unknowns).
-    void KeepNormalGradients() {
-        normals_recorded = true;
-        for (int j = 0; j < TNumNodes; ++j) {
-            if (!coupled[j]) continue;
-            gap_normal_gradient[j] = gap_gradient[j].template head<TDim * TNumNodes>();
-            if (reads_slip[j]) slip_normal_gradient[j] = slip_gradient[j].template leftCols<TDim * TNumNodes>();
-        }
+    /// ∂X_j of the running AD pass: in the unknowns q (the main pass, TMatrixSize derivatives) or in the slave nodal
+    /// normals (the normal pass, d n_s derivatives, which runs first).
+    template <class TGradient>
+    void SetGapGradient(int j, const TGradient& gradient) {
+        if constexpr (TGradient::RowsAtCompileTime == TMatrixSize)
+            gap_gradient[j] = gradient;
+        else
+            gap_normal_gradient[j] = gradient;
+    }
+    /// Row @p c of ∂T_j of the running AD pass, as SetGapGradient.
+    template <class TGradient>
+    void SetSlipGradientRow(int j, int c, const TGradient& gradient) {
+        if constexpr (TGradient::RowsAtCompileTime == TMatrixSize)
+            slip_gradient[j].row(c) = gradient.transpose();
+        else
+            slip_normal_gradient[j].row(c) = gradient.transpose();
     }
     bool Get(int j, NodalGapCouplingTerms& rTerms) const {
         if (!coupled[j]) return false;

@@ -91,7 +91,7 @@ void AddFamilyResidual(
             if (record == nullptr) continue;
             SpreadForceValues<TDim, TNS, TNM>(s, j, Eigen::Matrix<double, TDim, TDim>(force_per_slip * dynamic_factor),
                                               record->force_per_slip[j]);
-            for (int c = 0; c < TDim; ++c) record->slip_gradient[j].row(c) = transmitted[c].Derivatives();
+            for (int c = 0; c < TDim; ++c) record->SetSlipGradientRow(j, c, transmitted[c].Derivatives());
             record->reads_slip[j] = true;
             RecordNodalGapCoupling<T, TDim, TNS, TNM>(
                 s, j, Eigen::Matrix<double, TDim, 1>(force_per_pressure * (eps * dynamic_factor)), gap, *record);

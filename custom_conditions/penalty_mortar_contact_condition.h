@@ -39,7 +39,7 @@ protected:
         if (pLhs) mCouplingRecord.Clear();
         BaseType::CalculateConditionSystem(pLhs, pRhs, rCurrentProcessInfo);
     }
-    void AfterNormalPass() override { mCouplingRecord.KeepNormalGradients(); }
+    void AfterNormalPass() override { mCouplingRecord.normals_recorded = true; }
 
 private:
     mutable CouplingRecord mCouplingRecord;

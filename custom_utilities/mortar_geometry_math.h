@@ -126,8 +126,8 @@ bool InverseMap(const std::array<Vec2<T>, TNumNodes>& q, const Vec2<T>& p, Vec2<
 
 /// Local coordinates η of the point where the ray x + s·dir meets the face (Line2D2 in 2D, triangle or
 /// bilinear quadrilateral in 3D): solves x_face(η) − s·dir = x. Values first, then one step in T.
-/// @param[in] pStart η to start Newton from (the face centroid if null): a projection already solved for the same
-///            values converges in one iteration
+/// @param[in] pStart the solution η of a projection already solved for the same values (Newton then only takes the
+///            step in T; null: Newton from the face centroid)
 /// @return false if the ray is parallel to the face or Newton fails
 template <int TNumNodes, int TDim, class T>
 bool ProjectAlongDirection(const NodeCoordinates<T, TDim, TNumNodes>& face, const SpatialVector<T, TDim>& x,
@@ -144,11 +144,11 @@ bool ProjectAlongDirection(const NodeCoordinates<T, TDim, TNumNodes>& face, cons
     if (!(scale > 0.0) || !std::isfinite(scale) || !(dv.norm() > 0.0)) return false;
     SpatialVector<double, TDim> u = SpatialVector<double, TDim>::Zero();
     u.template head<TDim - 1>() = pStart ? *pStart : FaceCentroid<TNumNodes>();
-    if (pStart) {  // the ray parameter of the face point at the start: no step is left when the start is the solution
+    if (pStart) {  // the ray parameter of the face point at the known solution
         const SpatialVector<double, TDim> offset = fv.transpose() * FaceShapeFunctions<TNumNodes, double>(*pStart) - xv;
         u[TDim - 1] = offset.dot(dv) / dv.squaredNorm();
     }
-    bool converged = false;
+    bool converged = pStart != nullptr;
     for (int iteration = 0; iteration < 30 && !converged; ++iteration) {
         const Eigen::Matrix<double, TDim - 1, 1> e = u.template head<TDim - 1>();
         Square jac;

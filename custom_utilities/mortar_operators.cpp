@@ -87,7 +87,7 @@ void MortarIntegrator<TDim, TNS, TNM, T>::ComputeGaussPoints(
             point.normal = interpolated / length;
             Eigen::Matrix<T, TDim - 1, 1> eta;
             if (!detail::ProjectAlongDirection<TNM, TDim, T>(master, point.x1, point.normal, eta)) continue;
-            point.eta = eta;
+            point.eta = Values(eta);
             point.N2 = detail::FaceShapeFunctions<TNM, T>(eta);
             point.weight = ip.weight * det_j;
             if (mSettings.axisymmetric_thickness > 0.0)
@@ -191,10 +191,9 @@ void MasterOperatorOverNormals(const std::vector<MortarGaussPoint<T, TDim, TNS, 
         const SpatialVector<TNormal, TDim> interpolated = nodal_normals.transpose() * N1.template cast<TNormal>();
         const SpatialVector<TNormal, TDim> normal = interpolated / detail::Norm<TNormal>(interpolated);
         const SpatialVector<TNormal, TDim> x1 = Values(p.x1).template cast<TNormal>();
-        const Eigen::Matrix<double, TDim - 1, 1> start = Values(p.eta);
         Eigen::Matrix<TNormal, TDim - 1, 1> eta;
         // Succeeds: it starts from the solution the integration found for the same values.
-        if (!detail::ProjectAlongDirection<TNM, TDim, TNormal>(face, x1, normal, eta, &start)) continue;
+        if (!detail::ProjectAlongDirection<TNM, TDim, TNormal>(face, x1, normal, eta, &p.eta)) continue;
         const Eigen::Matrix<double, TNS, 1> phi_w = (dual.dual ? Eigen::Matrix<double, TNS, 1>(Ae * N1) : N1) *
                                                     Value(p.weight);
         const Eigen::Matrix<TNormal, TNM, 1> n2 = detail::FaceShapeFunctions<TNM, TNormal>(eta);
@@ -215,8 +214,9 @@ MortarPairIntegration<double, TDim, TNS, TNM> IntegrateMortarPairOverNormals(
     return pair;
 }
 
-// -- Explicit instantiations: the registered pairs × {double, Dual<d(n_s+n_m)>} × normal scalar, and the pair with M
-// over the nodal normals in Dual<d(n_s+n_m)> (the normal pass of the conditions) --
+// -- Explicit instantiations: the registered pairs × {double, Dual<d(n_s+n_m)>} × normal scalar, the pair with M over
+// the nodal normals in Dual<d(n_s+n_m)> (tests), and M over them in Dual<d n_s> on the main pass's points (the normal
+// pass of the conditions) --
 #define CONTACT_APP_INSTANTIATE_INTEGRATION_N(D, NS, NM, T, TN)                                                \
     template void MortarIntegrator<D, NS, NM, T>::ComputeGaussPoints<TN>(                                     \
         const NodeCoordinates<T, D, NS>&, const SpatialVector<TN, D>&, const NodeCoordinates<T, D, NM>&,      \
@@ -235,10 +235,10 @@ MortarPairIntegration<double, TDim, TNS, TNM> IntegrateMortarPairOverNormals(
         const MortarIntegrator<D, NS, NM, double>&, const NodeCoordinates<double, D, NS>&,                      \
         const SpatialVector<double, D>&, const NodeCoordinates<double, D, NM>&,                                \
         const NodeCoordinates<Dual<D*(NS + NM)>, D, NS>&, bool, Eigen::Matrix<Dual<D*(NS + NM)>, NS, NM>&);      \
-    template void MasterOperatorOverNormals<D, NS, NM, Dual<D*(NS + NM)>, Dual<D*(NS + NM)>>(                   \
+    template void MasterOperatorOverNormals<D, NS, NM, Dual<D*(NS + NM)>, Dual<D * NS>>(                       \
         const std::vector<MortarGaussPoint<Dual<D*(NS + NM)>, D, NS, NM>>&, const DualBasis<Dual<D*(NS + NM)>, NS>&, \
-        const NodeCoordinates<double, D, NM>&, const NodeCoordinates<Dual<D*(NS + NM)>, D, NS>&,                \
-        Eigen::Matrix<Dual<D*(NS + NM)>, NS, NM>&);
+        const NodeCoordinates<double, D, NM>&, const NodeCoordinates<Dual<D * NS>, D, NS>&,                      \
+        Eigen::Matrix<Dual<D * NS>, NS, NM>&);
 CONTACT_APP_FOR_EACH_MORTAR_PAIR(CONTACT_APP_INSTANTIATE_INTEGRATION, ~)
 #undef CONTACT_APP_INSTANTIATE_INTEGRATION
 #undef CONTACT_APP_INSTANTIATE_INTEGRATION_N

@@ -17,7 +17,7 @@ struct MortarGaussPoint {
     SpatialVector<T, TDim> x1;                ///< point on the slave face
     SpatialVector<T, TDim> normal;            ///< unit GP normal, normalised Σ N1_i n_i
     T weight;                                 ///< w_gp · det J_cell · (2π r / t if axisymmetric)
-    Eigen::Matrix<T, TDim - 1, 1> eta;        ///< master local coordinates of the projected point (N2 = N(η))
+    Eigen::Matrix<double, TDim - 1, 1> eta;   ///< master local coordinates of the projected point (values; N2 = N(η))
 };
 
 /// @brief Gauss rule on one integration cell from INTEGRATION_ORDER_CONTACT (GetIntegrationMethod table):
