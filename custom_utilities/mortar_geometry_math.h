@@ -126,6 +126,10 @@ bool InverseMap(const std::array<Vec2<T>, TNumNodes>& q, const Vec2<T>& p, Vec2<
 
 /// Local coordinates η of the point where the ray x + s·dir meets the face (Line2D2 in 2D, triangle or
 /// bilinear quadrilateral in 3D): solves x_face(η) − s·dir = x. Values first, then one step in T.
+/// @param[in] face the face's node coordinates
+/// @param[in] x the point the ray starts from
+/// @param[in] dir the ray's direction (need not be unit)
+/// @param[out] eta the local coordinates, with the derivatives of the inputs
 /// @param[in] pStart the solution η of a projection already solved for the same values (Newton then only takes the
 ///            step in T; null: Newton from the face centroid)
 /// @return false if the ray is parallel to the face or Newton fails
