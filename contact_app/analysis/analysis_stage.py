@@ -37,6 +37,7 @@ from typing import Any
 import contact_app as ca
 
 from ..io.restart_utility import RestoreProcessStates
+from ..launch_rank import is_output_rank
 from ..parameters import Parameters
 from .reporting import IterationStatus, Reporter, StepRecord
 from .solvers.mechanical_solver import STOP_DEFAULT_REASON
@@ -373,7 +374,8 @@ class AnalysisStage:
         for process in self._GetListOfProcesses():
             process.ExecuteBeforeOutputStep()
         for process in printing:
-            process.PrintOutput()
+            if is_output_rank():  # the other MPI ranks hold the same results (launch_rank.py)
+                process.PrintOutput()
         for process in self._GetListOfProcesses():
             process.ExecuteAfterOutputStep()
 

@@ -33,6 +33,7 @@ import contact_app as ca
 
 from ..io.restart_utility import ProcessStates, RestartUtility
 from ..json_input import quote
+from ..launch_rank import is_output_rank, launch_rank
 from ..parameters import Parameters, suggest
 from .analysis_stage import AnalysisStage
 from .outputs import CheckOutputs
@@ -380,8 +381,14 @@ class StructuralMechanicsAnalysis(AnalysisStage):
     def Initialize(self) -> None:
         """Kratos Initialize, plus ``ProjectParametersOutput.json`` when echo_level > 1."""
         super().Initialize()
+        if launch_rank() > 0:
+            logger.info(
+                "MPI rank %d: this rank computes the same model as rank 0, which alone writes the "
+                "files and prints the run's table",
+                launch_rank(),
+            )
         self._restart = self._CreateRestartSaver()
-        if self.echo_level > 1:
+        if self.echo_level > 1 and is_output_rank():
             with open("ProjectParametersOutput.json", "w", encoding="utf-8") as stream:
                 json.dump(self.project_parameters.GetValue(), stream, indent=4)
 
@@ -391,7 +398,7 @@ class StructuralMechanicsAnalysis(AnalysisStage):
     def OutputSolutionStep(self) -> None:
         """Kratos OutputSolutionStep, then the restart file of the step when one is due."""
         super().OutputSolutionStep()
-        if self._restart is not None and self._restart.IsRestartOutputStep():
+        if self._restart is not None and self._restart.IsRestartOutputStep() and is_output_rank():
             info = self._GetSolver().main_model_part.ProcessInfo
             info[ca.RESTART_PROCESS_STATES] = ProcessStates(self._GetListOfProcesses())
             self._restart.SaveRestart()
@@ -488,7 +495,7 @@ def run(
         parameters,
         base_dir=base_dir,
         stop_on_non_convergence=stop_on_non_convergence,
-        reporter=Reporter(quiet=quiet),
+        reporter=Reporter(quiet=quiet or not is_output_rank()),
         safe=safe,
         parameters_file=path,
     )

@@ -32,6 +32,7 @@ import numpy as np
 
 from .. import _core
 from .._core import InputError, Model
+from ..launch_rank import is_output_rank
 from ..parameters import Parameters
 from ._json_results import (
     element_key,
@@ -216,6 +217,8 @@ class JsonOutputProcess(Process):
         return data
 
     def _write(self) -> None:
+        if not is_output_rank():  # the other MPI ranks hold the same results (launch_rank.py)
+            return
         path = Path(self.output_file_name)
         if path.parent != Path():
             path.parent.mkdir(parents=True, exist_ok=True)

@@ -51,6 +51,7 @@ import numpy as np
 
 from .. import _core
 from .._core import InputError, Model
+from ..launch_rank import is_output_rank
 from ..legacy_keys import convert_legacy_keys
 from ..parameters import Parameters
 from ._utilities import check_historical, get_flag, get_variable, model_part_of, validate
@@ -191,8 +192,11 @@ class VtkOutputProcess(OutputProcess):
         """Delete files of earlier runs that follow this process' naming pattern.
 
         After a restart (ProcessInfo IS_RESTARTED) the files up to the restart TIME are kept and
-        the collection goes on from them; later files of the interrupted run are deleted.
+        the collection goes on from them; later files of the interrupted run are deleted. Only the
+        writing MPI rank touches the files (launch_rank.py).
         """
+        if not is_output_rank():
+            return
         process_info = self.model_part.ProcessInfo
         if process_info[_core.IS_RESTARTED]:
             self._resume(float(process_info[_core.TIME]))
