@@ -5,6 +5,7 @@
 #include <numeric>
 #include <chrono>
 #include <cstring>
+#include <filesystem>
 #include <unordered_set>
 
 #include <Eigen/CholmodSupport>
@@ -52,13 +53,11 @@ Eigen::Index BlockColumns(Eigen::Index bulk_size) {
     return std::clamp<Eigen::Index>((Eigen::Index{16} << 20) / std::max<Eigen::Index>(bulk_size, 1), 16, 1024);
 }
 
-/// P = A_CB A_BB⁻¹ A_BC as minus the Schur complement of [A_BB A_BC; A_CB 0] on C (MUMPS, ICNTL(19)):
-/// one sparse factorisation with C eliminated last instead of n_C solves with the bulk factor.
-/// False if MUMPS fails (the caller then takes the solves).
-/// @param symmetric A_BB symmetric and A_CB = A_BCᵀ: MUMPS's LDLᵀ on the lower triangles (half the work and memory)
-/// @param bulk_order elimination order of the bulk (CHOLMOD's), or empty for MUMPS's own
-bool SchurProductWithMumps(const SparseMatrixType& a_bb, const SparseMatrixType& a_bc, const SparseMatrixType& a_cb,
-                           bool symmetric, const std::vector<int>& bulk_order, Eigen::MatrixXd& rProduct) {
+}  // namespace
+
+bool detail::SchurProductWithMumps(const SparseMatrixType& a_bb, const SparseMatrixType& a_bc,
+                                   const SparseMatrixType& a_cb, bool symmetric, const std::vector<int>& bulk_order,
+                                   Eigen::MatrixXd& rProduct, double out_of_core_bytes) {
     const auto n_b = static_cast<MUMPS_INT>(a_bb.rows()), n_c = static_cast<MUMPS_INT>(a_bc.cols());
     std::vector<MUMPS_INT> rows, columns;
     std::vector<double> values;
@@ -111,14 +110,27 @@ bool SchurProductWithMumps(const SparseMatrixType& a_bb, const SparseMatrixType&
         id.perm_in = position.data();
         id.icntl[6] = 1;
     }
-    id.job = 4;  // analysis and factorisation
-    for (int retry = 0; retry < 3; ++retry) {
-        dmumps_c(&id);
-        if (id.infog[0] != -8 && id.infog[0] != -9) break;
-        id.icntl[13] = std::max<MUMPS_INT>(2 * id.icntl[13], 40);  // ICNTL(14): more working space
+    id.job = 1;  // analysis
+    dmumps_c(&id);
+    if (id.infog[0] >= 0) {
+        // INFOG(3): the factors' expected size in entries (in millions when negative). Out of core they go to disk
+        // as they are computed; only P is read back (from memory), so the writes are the whole cost.
+        const double factor_entries = id.infog[2] < 0 ? -1e6 * id.infog[2] : static_cast<double>(id.infog[2]);
+        if (factor_entries * sizeof(double) > out_of_core_bytes) {
+            const std::string folder = std::filesystem::temp_directory_path().string();
+            std::strncpy(id.ooc_tmpdir, folder.c_str(), sizeof(id.ooc_tmpdir) - 1);
+            std::strncpy(id.ooc_prefix, "contact_app_schur_", sizeof(id.ooc_prefix) - 1);
+            id.icntl[21] = 1;  // ICNTL(22): out of core
+        }
+        id.job = 2;  // factorisation
+        for (int retry = 0; retry < 3; ++retry) {
+            dmumps_c(&id);
+            if (id.infog[0] != -8 && id.infog[0] != -9) break;
+            id.icntl[13] = std::max<MUMPS_INT>(2 * id.icntl[13], 40);  // ICNTL(14): more working space
+        }
     }
     const bool done = id.infog[0] >= 0;
-    id.job = -2;
+    id.job = -2;  // frees the factors and deletes their files
     dmumps_c(&id);
     if (!done || !schur.allFinite()) return false;
     // Symmetric: MUMPS fills the lower triangle (by rows) only.
@@ -126,8 +138,6 @@ bool SchurProductWithMumps(const SparseMatrixType& a_bb, const SparseMatrixType&
     if (symmetric) rProduct.triangularView<Eigen::StrictlyUpper>() = rProduct.transpose();
     return true;
 }
-
-}  // namespace
 
 StaticCondensationMode ParseStaticCondensationMode(const std::string& name) {
     if (name == "auto") return StaticCondensationMode::Auto;
@@ -358,7 +368,7 @@ void StaticCondensationSolver::FactoriseBulk(SparseMatrixType a_bb, Bulk& rBulk)
     const SparseMatrixType bc_transposed = rBulk.a_bc.transpose();
     const bool symmetric_coupling = rBulk.cholesky && (bc_transposed - rBulk.a_cb).norm() <= 1e-14 * rBulk.a_cb.norm();
     bool have_product =
-        SchurProductWithMumps(a_bb, rBulk.a_bc, rBulk.a_cb, symmetric_coupling,
+        detail::SchurProductWithMumps(a_bb, rBulk.a_bc, rBulk.a_cb, symmetric_coupling,
                               symmetric_coupling ? rBulk.cholesky->EliminationOrder() : std::vector<int>{},
                               rBulk.schur_product);
     if (rBulk.cholesky) {
@@ -367,7 +377,8 @@ void StaticCondensationSolver::FactoriseBulk(SparseMatrixType a_bb, Bulk& rBulk)
             rBulk.cholesky.reset();
             // Not positive definite: MUMPS's symmetric run assumed it was; take its unsymmetric factorisation.
             if (symmetric_coupling)
-                have_product = SchurProductWithMumps(a_bb, rBulk.a_bc, rBulk.a_cb, false, {}, rBulk.schur_product);
+                have_product =
+                    detail::SchurProductWithMumps(a_bb, rBulk.a_bc, rBulk.a_cb, false, {}, rBulk.schur_product);
         }
     }
     if (!rBulk.cholesky) {

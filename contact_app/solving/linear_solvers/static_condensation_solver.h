@@ -31,6 +31,28 @@ inline constexpr double kAutoCondensationMaximumShare = 0.1;
 /// ∝ n_I³, 7.5 s at 10 288 on 2 cores, while the whole system's sparse factorisation at that size took 55 s:
 /// benchmarks/README.md, "Larger levels").
 inline constexpr std::size_t kAutoCondensationMaximumInterface = 12000;
+/// MUMPS's factors for the Schur product P are written to disk as they are computed (out of core) when its analysis
+/// expects more than this many bytes of them: P is all that is kept, so the factors never need to be read back, and
+/// out of core they no longer add their size to the run's peak memory (docs/theory/static_condensation.md §2).
+inline constexpr double kSchurOutOfCoreFactorBytes = 256.0 * (1 << 20);
+
+namespace detail {
+
+/// P = A_CB A_BB⁻¹ A_BC as minus the Schur complement of [A_BB A_BC; A_CB 0] on C (MUMPS, ICNTL(19)): one sparse
+/// factorisation with C eliminated last instead of n_C solves with the bulk factor.
+/// @param a_bb the bulk block A_BB (n_B × n_B)
+/// @param a_bc the coupling block A_BC (n_B × n_C)
+/// @param a_cb the coupling block A_CB (n_C × n_B)
+/// @param symmetric A_BB symmetric and A_CB = A_BCᵀ: MUMPS's LDLᵀ on the lower triangles (half the work and memory)
+/// @param bulk_order elimination order of the bulk (CHOLMOD's), or empty for MUMPS's own
+/// @param[out] rProduct P, n_C × n_C
+/// @param out_of_core_bytes factors expected above this size go to the temporary directory (TMPDIR, else /tmp)
+/// @return false if MUMPS fails (the caller then takes the bulk factor's solves)
+bool SchurProductWithMumps(const SparseMatrixType& a_bb, const SparseMatrixType& a_bc, const SparseMatrixType& a_cb,
+                           bool symmetric, const std::vector<int>& bulk_order, Eigen::MatrixXd& rProduct,
+                           double out_of_core_bytes = kSchurOutOfCoreFactorBytes);
+
+}  // namespace detail
 
 /// Solves A x = b by condensing a constant bulk onto the contact interface (docs/theory/static_condensation.md).
 /// Interface I: every DoF of the INTERFACE nodes and every DoF that is not a displacement (the multipliers);

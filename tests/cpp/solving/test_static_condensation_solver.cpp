@@ -3,9 +3,13 @@
 // reuse of the condensed bulk, recondensation and refusals.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
+
+#include <Eigen/Dense>
 
 #include "contact_app/application.h"
 #include "custom_utilities/contact_variables.h"
@@ -229,6 +233,60 @@ TEST(StaticCondensationSolver, NoInterfaceIsAFullSolve) {
     EXPECT_FALSE(solver.LastSolveWasCondensed());
     EXPECT_EQ(solver.Statistics().condensation,
               "no (no contact interface: no equation of an INTERFACE node or a multiplier)");
+}
+
+/// A_BB: a 2D Laplacian on n × n points plus the identity (symmetric positive definite); A_BC: random sparse
+/// n² × n_c; A_CB = A_BCᵀ, or with an unsymmetric perturbation.
+struct SchurBlocks {
+    SparseMatrixType a_bb, a_bc, a_cb;
+    SchurBlocks(int n, int n_c, bool symmetric) {
+        const int n_b = n * n;
+        Triplets bb, bc;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const int k = i + n * j;
+                bb.emplace_back(k, k, 5.0);
+                if (i + 1 < n) bb.emplace_back(k, k + 1, -1.0), bb.emplace_back(k + 1, k, -1.0);
+                if (j + 1 < n) bb.emplace_back(k, k + n, -1.0), bb.emplace_back(k + n, k, -1.0);
+            }
+        std::mt19937 rng(5);
+        std::uniform_int_distribution<int> row(0, n_b - 1);
+        std::uniform_real_distribution<double> value(-1.0, 1.0);
+        for (int c = 0; c < n_c; ++c)
+            for (int e = 0; e < 6; ++e) bc.emplace_back(row(rng), c, value(rng));
+        a_bb.resize(n_b, n_b);
+        a_bb.setFromTriplets(bb.begin(), bb.end());
+        a_bc.resize(n_b, n_c);
+        a_bc.setFromTriplets(bc.begin(), bc.end());
+        a_cb = a_bc.transpose();
+        if (!symmetric) a_cb.coeffs() *= 1.5;
+    }
+    Eigen::MatrixXd Dense() const {
+        return Eigen::MatrixXd(a_cb) * Eigen::MatrixXd(a_bb).ldlt().solve(Eigen::MatrixXd(a_bc));
+    }
+};
+
+TEST(StaticCondensationSolver, SchurProductOutOfCoreEqualsInCoreAndLeavesNoFiles) {
+    namespace fs = std::filesystem;
+    const auto leftovers = [] {
+        std::size_t count = 0;
+        for (const auto& entry : fs::directory_iterator(fs::temp_directory_path()))
+            count += entry.path().filename().string().rfind("contact_app_schur_", 0) == 0;
+        return count;
+    };
+    const std::size_t before = leftovers();
+    for (const bool symmetric : {true, false}) {
+        const SchurBlocks blocks(40, 25, symmetric);
+        const Eigen::MatrixXd reference = blocks.Dense();
+        Eigen::MatrixXd in_core, out_of_core;
+        ASSERT_TRUE(detail::SchurProductWithMumps(blocks.a_bb, blocks.a_bc, blocks.a_cb, symmetric, {}, in_core,
+                                                  std::numeric_limits<double>::infinity()));
+        ASSERT_TRUE(detail::SchurProductWithMumps(blocks.a_bb, blocks.a_bc, blocks.a_cb, symmetric, {}, out_of_core,
+                                                  0.0));
+        EXPECT_LT((in_core - reference).norm(), 1e-12 * reference.norm()) << symmetric;
+        EXPECT_EQ((out_of_core - in_core).norm(), 0.0) << symmetric;
+    }
+    EXPECT_EQ(leftovers(), before);
 }
 
 TEST(StaticCondensationSolver, ModeNames) {
