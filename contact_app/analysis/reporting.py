@@ -118,6 +118,9 @@ def linear_solver_text(statistics: dict, *, largest: bool = True) -> str:
     enlargements = int(statistics.get("workspace_enlargements", 0))
     if enlargements:  # MUMPS redid a factorisation with more working space (ICNTL(14))
         text += f" ({enlargements} redone with more working space)"
+    out_of_core = int(statistics.get("out_of_core_factorizations", 0))
+    if out_of_core:  # MUMPS kept the factors on disk: in core they would not fit (ICNTL(22))
+        text += f" ({out_of_core} out of core: the factors on disk in the temporary directory)"
     iterations = [int(n) for n in statistics.get("krylov_iterations", [])]
     if statistics.get("krylov") and iterations:
         text += (

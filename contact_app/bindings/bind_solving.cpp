@@ -45,6 +45,7 @@ void BindLinearSolvers(py::module_& m) {
                 statistics["symbolic_seconds"] = s.symbolic_seconds;
                 statistics["numeric_seconds"] = s.numeric_seconds;
                 statistics["workspace_enlargements"] = s.workspace_enlargements;
+                statistics["out_of_core_factorizations"] = s.out_of_core_factorizations;
                 statistics["symbolic_analyses"] = self.NumberOfSymbolicAnalyses();
                 statistics["condensation"] = s.condensation;
                 statistics["interface_size"] = s.interface_size;
@@ -68,7 +69,7 @@ void BindLinearSolvers(py::module_& m) {
             "solver, ordering (used) and ordering_setting (asked for), factorizations, system_size, "
             "factor_nonzeros (nnz L + U) and factor_memory (bytes) of the last factorisation, and their maxima; factor_flops, symbolic_seconds and "
             "numeric_seconds (CPU) summed over the run, symbolic_analyses, workspace_enlargements (MUMPS factorisations "
-            "redone with more working space); static condensation: condensation ('' = "
+            "redone with more working space), out_of_core_factorizations (MUMPS factorisations kept on disk); static condensation: condensation ('' = "
             "not a condensing solver, 'yes' or 'no (why)'), interface_size and bulk_size of the last condensed solve, "
             "bulk_factorizations, condensed_solves, bulk_seconds and interface_seconds (wall); Krylov solvers: krylov "
             "(True), krylov_method, krylov_iterations (per solve of the run), last_relative_residual, tolerance, "

@@ -29,6 +29,7 @@ struct LinearSolverStatistics {
     double symbolic_seconds = 0.0;   ///< CPU time of all symbolic analyses (ordering included)
     double numeric_seconds = 0.0;    ///< CPU time of all numeric factorisations
     std::size_t workspace_enlargements = 0;  ///< MUMPS: factorisations redone with more working space (ICNTL(14))
+    std::size_t out_of_core_factorizations = 0;  ///< MUMPS: factorisations whose factors went to disk (ICNTL(22))
     // Static condensation (StaticCondensationSolver; docs/theory/static_condensation.md):
     std::string condensation;          ///< "" = not a condensing solver; "yes", or "no (why)"
     std::size_t interface_size = 0;    ///< n_I of the last condensed solve

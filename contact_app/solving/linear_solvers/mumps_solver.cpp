@@ -2,7 +2,10 @@
 #include "contact_app/solving/linear_solvers/mumps_solver.h"
 
 #include <algorithm>
+#include <cstring>
 #include <ctime>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -105,6 +108,17 @@ std::vector<MUMPS_INT> MetisOrdering(const SparseMatrixType& rA) {
     return position;
 }
 
+/// MemAvailable of /proc/meminfo in bytes; negative when it cannot be read (not Linux).
+double AvailableMemoryBytes() {
+    std::ifstream meminfo("/proc/meminfo");
+    std::string key;
+    double kilobytes = 0.0;
+    std::string unit;
+    while (meminfo >> key >> kilobytes >> unit)
+        if (key == "MemAvailable:") return 1024.0 * kilobytes;
+    return -1.0;
+}
+
 }  // namespace
 
 /// One MUMPS instance and the coordinate pattern it was analysed with (MUMPS keeps pointers into it).
@@ -147,8 +161,8 @@ struct MumpsSolver::Instance {
     }
 };
 
-MumpsSolver::MumpsSolver(FillReducingOrdering ordering, int workspace_percent)
-    : mOrdering(ordering), mWorkspacePercent(workspace_percent) {
+MumpsSolver::MumpsSolver(FillReducingOrdering ordering, int workspace_percent, double out_of_core_bytes)
+    : mOrdering(ordering), mWorkspacePercent(workspace_percent), mOutOfCoreBytes(out_of_core_bytes) {
     CONTACT_CHECK(workspace_percent >= 0, InputError, "mumps: the working space beyond the analysis's estimate must be ",
                   "a percentage >= 0 (ICNTL(14)), got ", workspace_percent);
     mStatistics.solver = Info();
@@ -191,6 +205,15 @@ void MumpsSolver::Analyse(SparseMatrixType& rA) {
     CONTACT_CHECK(mumps.Infog(1) >= 0, ConvergenceError, "mumps: the analysis of the ", n, "x", n, " system failed: ",
                   MumpsErrorText(mumps.Infog(1), mumps.Infog(2)));
     mStatistics.ordering = UsedOrderingName(mumps.Infog(7));
+    // INFOG(17): the memory (MB, rounded) the analysis expects the in-core factorisation to take.
+    const double limit = mOutOfCoreBytes >= 0.0 ? mOutOfCoreBytes : kOutOfCoreShare * AvailableMemoryBytes();
+    const bool out_of_core = limit >= 0.0 && 1.0e6 * mumps.Infog(17) >= limit;
+    mumps.Icntl(22) = out_of_core ? 1 : 0;
+    if (out_of_core) {
+        const std::string folder = std::filesystem::temp_directory_path().string();
+        std::strncpy(mumps.id.ooc_tmpdir, folder.c_str(), sizeof(mumps.id.ooc_tmpdir) - 1);
+        std::strncpy(mumps.id.ooc_prefix, "contact_app_mumps_", sizeof(mumps.id.ooc_prefix) - 1);
+    }
 }
 
 void MumpsSolver::Factorise(SparseMatrixType& rA) {
@@ -207,6 +230,7 @@ void MumpsSolver::Factorise(SparseMatrixType& rA) {
         ++mStatistics.workspace_enlargements;
     }
     mStatistics.numeric_seconds += CpuSeconds() - start;
+    if (mumps.Icntl(22) == 1) ++mStatistics.out_of_core_factorizations;
     const MUMPS_INT code = mumps.Infog(1) >= 0 && mumps.Infog(28) > 0 ? kSingular : mumps.Infog(1);
     CONTACT_CHECK(code >= 0, ConvergenceError, "mumps: the factorisation of the ", rA.rows(), "x", rA.rows(),
                   " system failed: ", MumpsErrorText(code, mumps.Infog(28)));

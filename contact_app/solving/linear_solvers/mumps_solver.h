@@ -18,14 +18,24 @@ namespace contact_app {
 /// dissection of the pattern of A + Aᵀ, computed through CHOLMOD and given to MUMPS
 /// (ICNTL(7) = 1), because Debian's MUMPS is built without METIS; "amd" is MUMPS's AMD
 /// (ICNTL(7) = 0). Why and when: docs/architecture.md, "Solving layer".
+/// Out of core: when the analysis expects the factorisation to need more memory than @p out_of_core_bytes (by default
+/// 70 % of the memory the system has available at that moment), MUMPS writes the factors to the temporary directory
+/// (TMPDIR, else /tmp) and reads them back for the solve (ICNTL(22) = 1): slower, but the run completes where in core it
+/// would exhaust the memory. Statistics().out_of_core_factorizations counts those factorisations.
 class MumpsSolver : public LinearSolver {
 public:
     /// @param ordering fill-reducing ordering: "auto" and "metis" give METIS, "amd" MUMPS's AMD
     /// @param workspace_percent ICNTL(14): the working space the factorisation may take beyond the analysis's estimate,
     ///        in per cent (MUMPS's default, 20). When pivoting needs more (MUMPS errors -8, -9) the factorisation is
     ///        redone with it doubled (at least +20), at most twice; Statistics().workspace_enlargements counts them.
+    /// @param out_of_core_bytes factorisations expected to need at least this memory go out of core (0: all of them);
+    ///        negative (the default):
+    ///        kOutOfCoreShare of the memory available at each analysis (MemAvailable; never when unknown)
     /// @throws InputError if @p workspace_percent is negative
-    explicit MumpsSolver(FillReducingOrdering ordering = FillReducingOrdering::Auto, int workspace_percent = 20);
+    explicit MumpsSolver(FillReducingOrdering ordering = FillReducingOrdering::Auto, int workspace_percent = 20,
+                         double out_of_core_bytes = -1.0);
+    /// The share of the available memory a factorisation may expect to use before it goes out of core.
+    static constexpr double kOutOfCoreShare = 0.7;
     ~MumpsSolver() override;
     MumpsSolver(const MumpsSolver&) = delete;
     MumpsSolver& operator=(const MumpsSolver&) = delete;
@@ -45,6 +55,7 @@ private:
 
     FillReducingOrdering mOrdering;
     int mWorkspacePercent;
+    double mOutOfCoreBytes;
     std::unique_ptr<Instance> mInstance;  // owned; created by the first Solve, freed by Clear
     SparsityPattern mPattern;             // of the last analysed matrix
     std::size_t mAnalyses = 0;

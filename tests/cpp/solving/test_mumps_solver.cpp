@@ -2,6 +2,7 @@
 // MumpsSolver: unsymmetric and saddle-point solves, analysis reuse, orderings, statistics, errors.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 #include "contact_app/kernel/exceptions.h"
@@ -125,6 +126,36 @@ TEST(MumpsSolver, RedoesTheFactorisationWithMoreWorkingSpace) {
         EXPECT_EQ(standard.Statistics().workspace_enlargements, 0u);
     }
     EXPECT_THROW(MumpsSolver(FillReducingOrdering::Auto, -1), InputError);
+}
+
+/// Files of MUMPS's out-of-core factors in the temporary directory.
+std::size_t OutOfCoreFiles() {
+    std::size_t count = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
+        count += entry.path().filename().string().rfind("contact_app_mumps_", 0) == 0;
+    return count;
+}
+
+/// A limit of 0 bytes sends every factorisation out of core: the solutions are those in core, the factors are on disk
+/// while the solver keeps them and gone with it; the default (70 % of the available memory) keeps these in core.
+TEST(MumpsSolver, OutOfCoreSolvesAsInCoreAndLeavesNoFiles) {
+    const std::size_t before = OutOfCoreFiles();
+    {
+        MumpsSolver in_core, out_of_core(FillReducingOrdering::Auto, 20, 0.0);
+        for (const SparseMatrixType& matrix : {ConvectionDiffusion(30), SaddlePoint(200)}) {
+            const SystemVectorType b = SystemVectorType::LinSpaced(matrix.rows(), 1.0, 2.0);
+            SystemVectorType x_in, x_out, b_in = b, b_out = b;
+            SparseMatrixType a_in = matrix, a_out = matrix;
+            in_core.Solve(a_in, x_in, b_in);
+            out_of_core.Solve(a_out, x_out, b_out);
+            EXPECT_LT((matrix * x_out - b).norm(), 1e-12 * b.norm());
+            EXPECT_LT((x_out - x_in).norm(), 1e-14 * x_in.norm());
+            EXPECT_GT(OutOfCoreFiles(), before);  // the factors of the last factorisation
+        }
+        EXPECT_EQ(in_core.Statistics().out_of_core_factorizations, 0u);
+        EXPECT_EQ(out_of_core.Statistics().out_of_core_factorizations, 2u);
+    }
+    EXPECT_EQ(OutOfCoreFiles(), before);
 }
 
 TEST(MumpsSolver, FactoryNamesAndOrderings) {

@@ -227,3 +227,13 @@ def test_no_enlargement_says_nothing_about_working_space() -> None:
     statistics = _mumps(0)
     del statistics["workspace_enlargements"]  # a solver that does not count them
     assert linear_solver_text(statistics) == linear_solver_text(_mumps(0))
+
+
+def test_out_of_core_factorisations_are_reported() -> None:
+    statistics = _mumps(0) | {"out_of_core_factorizations": 12}
+    assert linear_solver_text(statistics) == (
+        'linear solver: mumps, ordering metis ("auto"), 12 factorisations '
+        "(12 out of core: the factors on disk in the temporary directory), "
+        "largest factors 4e+05 nnz in 8.0 MB"
+    )
+    assert "out of core" not in linear_solver_text(_mumps(0))
