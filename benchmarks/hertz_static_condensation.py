@@ -12,7 +12,10 @@ after the run, and the largest relative differences of the displacements and con
 against the condensation-off run of the level.
 
 Usage: ``python benchmarks/hertz_static_condensation.py [levels ...]`` (default: 2 3; a fractional
-level is an intermediate mesh, e.g. 3.8: 2.8e5 unknowns).
+level is an intermediate mesh, e.g. 3.8: 2.8e5 unknowns). One mode of one level, as JSON:
+``python benchmarks/hertz_static_condensation.py --child LEVEL MODE`` with MODE one of ``MODES`` or
+``on-ooc`` (condensed, the bulk kept out of core by MUMPS whatever its size:
+``StaticCondensationSolver.SetBulkInCoreLimit(0)``).
 """
 
 from __future__ import annotations
@@ -48,7 +51,16 @@ def _measure(level: float, mode: str) -> dict:
     workdir.mkdir(parents=True, exist_ok=True)
     parameters = json.loads((EXAMPLE / "ProjectParameters.json").read_text())
     linear = parameters["solver_settings"]["linear_solver_settings"]
-    linear["static_condensation"], solver_type = MODES[mode]
+    linear["static_condensation"], solver_type = MODES["on" if mode == "on-ooc" else mode]
+    if mode == "on-ooc":  # every condensing solver of the run keeps its bulk out of core
+        create = ca.StaticCondensationSolver
+
+        def out_of_core(*args: object, **kwargs: object) -> object:
+            solver = create(*args, **kwargs)
+            solver.SetBulkInCoreLimit(0.0)
+            return solver
+
+        ca.StaticCondensationSolver = out_of_core
     if solver_type is not None:
         linear["solver_type"] = solver_type
     parameters["output_processes"] = {}

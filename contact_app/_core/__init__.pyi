@@ -2415,6 +2415,10 @@ class StaticCondensationSolver(LinearSolver):
         """
     def LastSolveWasCondensed(self) -> bool:
         ...
+    def SetBulkInCoreLimit(self, bytes: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        """
+        Bulk factors CHOLMOD expects above this many bytes are kept out of core by MUMPS instead (0: always; negative, the default: half the memory available when the bulk is factorised).
+        """
     def __init__(self, inner: LinearSolver, mode: str = 'auto', bulk_not_linear: str = '') -> None:
         """
         inner: solver of the full system; mode: 'auto', 'on' or 'off'; bulk_not_linear: why the bodies' stiffness may change ('' = it does not; 'auto' then refuses).

@@ -86,6 +86,9 @@ void BindLinearSolvers(py::module_& m) {
              "inner: solver of the full system; mode: 'auto', 'on' or 'off'; bulk_not_linear: why the bodies' "
              "stiffness may change ('' = it does not; 'auto' then refuses).")
         .def("LastSolveWasCondensed", &StaticCondensationSolver::LastSolveWasCondensed)
+        .def("SetBulkInCoreLimit", &StaticCondensationSolver::SetBulkInCoreLimit, py::arg("bytes"),
+             "Bulk factors CHOLMOD expects above this many bytes are kept out of core by MUMPS instead (0: always; "
+             "negative, the default: half the memory available when the bulk is factorised).")
         .def("InnerSolver", &StaticCondensationSolver::InnerSolver, "The solver of the full system.");
     m.def(
         "CreateLinearSolver",

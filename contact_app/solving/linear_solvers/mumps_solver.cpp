@@ -5,7 +5,6 @@
 #include <cstring>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -13,6 +12,7 @@
 #include <dmumps_c.h>
 
 #include "contact_app/kernel/exceptions.h"
+#include "contact_app/solving/linear_solvers/available_memory.h"
 
 namespace contact_app {
 
@@ -106,17 +106,6 @@ std::vector<MUMPS_INT> MetisOrdering(const SparseMatrixType& rA) {
     std::vector<MUMPS_INT> position(view.nrow);
     for (std::size_t k = 0; k < view.nrow; ++k) position[static_cast<std::size_t>(permutation[k])] = static_cast<MUMPS_INT>(k + 1);
     return position;
-}
-
-/// MemAvailable of /proc/meminfo in bytes; negative when it cannot be read (not Linux).
-double AvailableMemoryBytes() {
-    std::ifstream meminfo("/proc/meminfo");
-    std::string key;
-    double kilobytes = 0.0;
-    std::string unit;
-    while (meminfo >> key >> kilobytes >> unit)
-        if (key == "MemAvailable:") return 1024.0 * kilobytes;
-    return -1.0;
 }
 
 }  // namespace

@@ -19,6 +19,7 @@
 #include "contact_app/kernel/model_part.h"
 #include "contact_app/kernel/node.h"
 #include "contact_app/kernel/variables.h"
+#include "contact_app/solving/linear_solvers/available_memory.h"
 
 // LAPACK (OpenBLAS, threaded): the dense LU of the interface system.
 extern "C" void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
@@ -55,40 +56,74 @@ Eigen::Index BlockColumns(Eigen::Index bulk_size) {
 
 }  // namespace
 
-bool detail::SchurProductWithMumps(const SparseMatrixType& a_bb, const SparseMatrixType& a_bc,
-                                   const SparseMatrixType& a_cb, bool symmetric, const std::vector<int>& bulk_order,
-                                   Eigen::MatrixXd& rProduct, double out_of_core_bytes) {
+/// One MUMPS instance on [A_BB A_BC; A_CB 0] and what it keeps pointers to.
+struct detail::MumpsSchurFactorisation::Instance {
+    DMUMPS_STRUC_C id{};
+    bool initialised = false;
+    MUMPS_INT n_b = 0, n_c = 0;
+    std::vector<MUMPS_INT> schur_variables;
+
+    ~Instance() {
+        if (!initialised) return;
+        id.job = -2;  // frees the factors and deletes their files
+        dmumps_c(&id);
+    }
+};
+
+detail::MumpsSchurFactorisation::MumpsSchurFactorisation() = default;
+detail::MumpsSchurFactorisation::~MumpsSchurFactorisation() = default;
+
+void detail::MumpsSchurFactorisation::Release() {
+    mInstance.reset();
+}
+
+bool detail::MumpsSchurFactorisation::OutOfCore() const {
+    return mInstance && mInstance->id.icntl[21] == 1;
+}
+
+bool detail::MumpsSchurFactorisation::Compute(const SparseMatrixType& a_bb, const SparseMatrixType& a_bc,
+                                              const SparseMatrixType& a_cb, SchurSymmetry symmetry,
+                                              const std::vector<int>& bulk_order, Eigen::MatrixXd& rProduct,
+                                              double out_of_core_bytes) {
+    Release();
+    auto instance = std::make_unique<Instance>();
+    const bool lower_only = symmetry != SchurSymmetry::UNSYMMETRIC;
     const auto n_b = static_cast<MUMPS_INT>(a_bb.rows()), n_c = static_cast<MUMPS_INT>(a_bc.cols());
     std::vector<MUMPS_INT> rows, columns;
     std::vector<double> values;
     const auto add = [&](const SparseMatrixType& block, MUMPS_INT row_offset, MUMPS_INT column_offset) {
         for (Eigen::Index j = 0; j < block.outerSize(); ++j)
             for (SparseMatrixType::InnerIterator entry(block, j); entry; ++entry) {
-                if (symmetric && entry.row() + row_offset < j + column_offset) continue;
+                if (lower_only && entry.row() + row_offset < j + column_offset) continue;
                 rows.push_back(static_cast<MUMPS_INT>(entry.row()) + 1 + row_offset);
                 columns.push_back(static_cast<MUMPS_INT>(j) + 1 + column_offset);
                 values.push_back(entry.value());
             }
     };
     add(a_bb, 0, 0);
-    if (!symmetric) add(a_bc, 0, n_b);
+    if (!lower_only) add(a_bc, 0, n_b);
     add(a_cb, n_b, 0);
     for (MUMPS_INT c = 1; c <= n_c; ++c) {  // the (zero) diagonal of the Schur variables
         rows.push_back(n_b + c);
         columns.push_back(n_b + c);
         values.push_back(0.0);
     }
-    std::vector<MUMPS_INT> schur_variables(static_cast<std::size_t>(n_c));
-    std::iota(schur_variables.begin(), schur_variables.end(), n_b + 1);
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> schur(n_c, n_c);
+    instance->n_b = n_b;
+    instance->n_c = n_c;
+    instance->schur_variables.resize(static_cast<std::size_t>(n_c));
+    std::iota(instance->schur_variables.begin(), instance->schur_variables.end(), n_b + 1);
+    // MUMPS writes S by rows (the lower triangle by rows when symmetric) into P's storage: read column-major, that is
+    // Sᵀ (the upper triangle), turned round below without a second n_C × n_C matrix.
+    rProduct.setZero(n_c, n_c);  // the triangle MUMPS does not write must be finite too
 
-    DMUMPS_STRUC_C id{};
+    DMUMPS_STRUC_C& id = instance->id;
     id.job = -1;  // initialise
     id.par = 1;
-    id.sym = symmetric ? 1 : 0;  // 1: A_BB positive definite (the Schur variables are not pivots)
-    id.comm_fortran = -987654;   // the sequential library's only communicator
+    id.sym = static_cast<MUMPS_INT>(symmetry);
+    id.comm_fortran = -987654;  // the sequential library's only communicator
     dmumps_c(&id);
     if (id.infog[0] < 0) return false;
+    instance->initialised = true;
     id.icntl[0] = id.icntl[1] = id.icntl[2] = -1;  // silent
     id.icntl[3] = 0;
     id.n = n_b + n_c;
@@ -97,9 +132,9 @@ bool detail::SchurProductWithMumps(const SparseMatrixType& a_bb, const SparseMat
     id.jcn = columns.data();
     id.a = values.data();
     id.size_schur = n_c;
-    id.listvar_schur = schur_variables.data();
+    id.listvar_schur = instance->schur_variables.data();
     id.icntl[18] = 1;  // ICNTL(19): the Schur complement centralised, by rows
-    id.schur = schur.data();
+    id.schur = rProduct.data();
     id.schur_lld = n_c;
     std::vector<MUMPS_INT> position;
     if (!bulk_order.empty()) {  // ICNTL(7) = 1: PERM_IN(i) = the position of variable i, C last
@@ -112,31 +147,63 @@ bool detail::SchurProductWithMumps(const SparseMatrixType& a_bb, const SparseMat
     }
     id.job = 1;  // analysis
     dmumps_c(&id);
-    if (id.infog[0] >= 0) {
-        // INFOG(3): the factors' expected size in entries (in millions when negative). Out of core they go to disk
-        // as they are computed; only P is read back (from memory), so the writes are the whole cost.
-        const double factor_entries = id.infog[2] < 0 ? -1e6 * id.infog[2] : static_cast<double>(id.infog[2]);
-        if (factor_entries * sizeof(double) > out_of_core_bytes) {
-            const std::string folder = std::filesystem::temp_directory_path().string();
-            std::strncpy(id.ooc_tmpdir, folder.c_str(), sizeof(id.ooc_tmpdir) - 1);
-            std::strncpy(id.ooc_prefix, "contact_app_schur_", sizeof(id.ooc_prefix) - 1);
-            id.icntl[21] = 1;  // ICNTL(22): out of core
-        }
-        id.job = 2;  // factorisation
-        for (int retry = 0; retry < 3; ++retry) {
-            dmumps_c(&id);
-            if (id.infog[0] != -8 && id.infog[0] != -9) break;
-            id.icntl[13] = std::max<MUMPS_INT>(2 * id.icntl[13], 40);  // ICNTL(14): more working space
-        }
+    if (id.infog[0] < 0) return false;
+    // INFOG(3): the factors' expected size in entries (in millions when negative). Out of core they go to disk as
+    // they are computed, and are read back only by Solve.
+    const double factor_entries = id.infog[2] < 0 ? -1e6 * id.infog[2] : static_cast<double>(id.infog[2]);
+    if (factor_entries * sizeof(double) > out_of_core_bytes) {
+        const std::string folder = std::filesystem::temp_directory_path().string();
+        std::strncpy(id.ooc_tmpdir, folder.c_str(), sizeof(id.ooc_tmpdir) - 1);
+        std::strncpy(id.ooc_prefix, "contact_app_schur_", sizeof(id.ooc_prefix) - 1);
+        id.icntl[21] = 1;  // ICNTL(22): out of core
     }
-    const bool done = id.infog[0] >= 0;
-    id.job = -2;  // frees the factors and deletes their files
-    dmumps_c(&id);
-    if (!done || !schur.allFinite()) return false;
-    // Symmetric: MUMPS fills the lower triangle (by rows) only.
-    rProduct = -schur;
-    if (symmetric) rProduct.triangularView<Eigen::StrictlyUpper>() = rProduct.transpose();
+    id.job = 2;  // factorisation
+    for (int retry = 0; retry < 3; ++retry) {
+        dmumps_c(&id);
+        if (id.infog[0] != -8 && id.infog[0] != -9) break;
+        id.icntl[13] = std::max<MUMPS_INT>(2 * id.icntl[13], 40);  // ICNTL(14): more working space
+    }
+    // The coordinate arrays go with this scope: the solve phase reads the factor only.
+    id.irn = id.jcn = nullptr;
+    id.a = nullptr;
+    id.perm_in = nullptr;
+    if (id.infog[0] < 0) return false;
+    if (lower_only)
+        rProduct.triangularView<Eigen::StrictlyLower>() = rProduct.transpose();
+    else
+        rProduct.transposeInPlace();
+    if (!rProduct.allFinite()) return false;
+    rProduct *= -1.0;
+    mInstance = std::move(instance);
     return true;
+}
+
+Eigen::MatrixXd detail::MumpsSchurFactorisation::Solve(const Eigen::MatrixXd& rhs) const {
+    CONTACT_CHECK(mInstance != nullptr, InternalError, "MumpsSchurFactorisation::Solve without a kept factor");
+    Instance& instance = *mInstance;
+    const Eigen::Index n_b = instance.n_b, n = instance.n_b + instance.n_c;
+    Eigen::MatrixXd full = Eigen::MatrixXd::Zero(n, rhs.cols());
+    full.topRows(n_b) = rhs;
+    DMUMPS_STRUC_C& id = instance.id;
+    id.nrhs = static_cast<MUMPS_INT>(rhs.cols());
+    id.lrhs = static_cast<MUMPS_INT>(n);
+    id.rhs = full.data();
+    id.icntl[25] = 0;  // ICNTL(26): the internal problem A_BB x_B = b_B
+    id.job = 3;
+    dmumps_c(&id);
+    id.rhs = nullptr;
+    CONTACT_CHECK(id.infog[0] >= 0 && full.allFinite(), ConvergenceError,
+                  "static condensation: MUMPS's solve with the bulk factor failed (MUMPS error ", id.infog[0], ")",
+                  "\n  fix: set linear_solver_settings.static_condensation to false");
+    return full.topRows(n_b);
+}
+
+bool detail::SchurProductWithMumps(const SparseMatrixType& a_bb, const SparseMatrixType& a_bc,
+                                   const SparseMatrixType& a_cb, SchurSymmetry symmetry,
+                                   const std::vector<int>& bulk_order, Eigen::MatrixXd& rProduct,
+                                   double out_of_core_bytes) {
+    MumpsSchurFactorisation factorisation;
+    return factorisation.Compute(a_bb, a_bc, a_cb, symmetry, bulk_order, rProduct, out_of_core_bytes);
 }
 
 StaticCondensationMode ParseStaticCondensationMode(const std::string& name) {
@@ -153,6 +220,8 @@ struct BulkCholesky : Eigen::CholmodSupernodalLLT<SparseMatrixType> {
         const auto* perm = static_cast<const int*>(m_cholmodFactor->Perm);
         return {perm, perm + m_cholmodFactor->n};
     }
+    /// The numeric factor's size the symbolic analysis computed (the supernodal values, in bytes).
+    double FactorBytes() const { return static_cast<double>(m_cholmodFactor->xsize) * sizeof(double); }
 };
 
 /// The factorised bulk block and the Schur product of one condensation. The interface DoFs the bulk
@@ -168,10 +237,15 @@ struct StaticCondensationSolver::Bulk {
     std::unique_ptr<BulkCholesky> cholesky;  // A_BB symmetric positive definite
     std::unique_ptr<Eigen::UmfPackLU<SparseMatrixType>> lu;                  // otherwise
     Eigen::MatrixXd schur_product;          // P = A_CB A_BB⁻¹ A_BC, n_C × n_C
+    /// A bulk too large for memory: MUMPS's factorisation for P, kept out of core (after schur_product, into
+    /// whose storage it wrote).
+    std::unique_ptr<detail::MumpsSchurFactorisation> mumps;
 
     Eigen::MatrixXd SolveBulk(const Eigen::MatrixXd& rhs) const {
-        return cholesky ? Eigen::MatrixXd(cholesky->solve(rhs)) : Eigen::MatrixXd(lu->solve(rhs));
+        if (cholesky) return cholesky->solve(rhs);
+        return mumps ? mumps->Solve(rhs) : Eigen::MatrixXd(lu->solve(rhs));
     }
+    const char* FactorName() const { return cholesky ? "cholmod" : mumps ? "mumps out of core" : "umfpack"; }
 };
 
 StaticCondensationSolver::StaticCondensationSolver(LinearSolver::Pointer inner, StaticCondensationMode mode,
@@ -201,8 +275,7 @@ LinearSolverStatistics StaticCondensationSolver::Statistics() const {
     statistics.interface_seconds = mStatistics.interface_seconds;
     // Every solve condensed: the inner solver never ran, so name what did.
     if (statistics.factorizations == 0 && mBulk)
-        statistics.solver = std::string("static condensation (bulk ") + (mBulk->cholesky ? "cholmod" : "umfpack") +
-                            ", interface dense LU)";
+        statistics.solver = std::string("static condensation (bulk ") + mBulk->FactorName() + ", interface dense LU)";
     return statistics;
 }
 
@@ -367,18 +440,33 @@ void StaticCondensationSolver::FactoriseBulk(SparseMatrixType a_bb, Bulk& rBulk)
     // P from MUMPS's Schur complement (LDLᵀ in CHOLMOD's order when the bulk is symmetric).
     const SparseMatrixType bc_transposed = rBulk.a_bc.transpose();
     const bool symmetric_coupling = rBulk.cholesky && (bc_transposed - rBulk.a_cb).norm() <= 1e-14 * rBulk.a_cb.norm();
-    bool have_product =
-        detail::SchurProductWithMumps(a_bb, rBulk.a_bc, rBulk.a_cb, symmetric_coupling,
-                              symmetric_coupling ? rBulk.cholesky->EliminationOrder() : std::vector<int>{},
-                              rBulk.schur_product);
+    const std::vector<int> order = symmetric_coupling ? rBulk.cholesky->EliminationOrder() : std::vector<int>{};
+    // A factor too large for the memory: MUMPS's, out of core, solves the bulk too (LDLᵀ with 2×2 pivots, as nothing
+    // has shown A_BB definite); CHOLMOD's is not formed.
+    const double in_core_limit = mBulkInCoreBytes >= 0.0 ? mBulkInCoreBytes : kBulkInCoreShare * AvailableMemoryBytes();
+    if (rBulk.cholesky && in_core_limit >= 0.0 && rBulk.cholesky->FactorBytes() > in_core_limit) {
+        rBulk.mumps = std::make_unique<detail::MumpsSchurFactorisation>();
+        const auto symmetry =
+            symmetric_coupling ? detail::SchurSymmetry::SYMMETRIC : detail::SchurSymmetry::UNSYMMETRIC;
+        if (rBulk.mumps->Compute(a_bb, rBulk.a_bc, rBulk.a_cb, symmetry, order, rBulk.schur_product, 0.0)) {
+            rBulk.cholesky.reset();
+            return;
+        }
+        rBulk.mumps.reset();  // MUMPS failed: the factor in memory after all
+    }
+    bool have_product = detail::SchurProductWithMumps(
+        a_bb, rBulk.a_bc, rBulk.a_cb,
+        symmetric_coupling ? detail::SchurSymmetry::POSITIVE_DEFINITE : detail::SchurSymmetry::UNSYMMETRIC, order,
+        rBulk.schur_product);
     if (rBulk.cholesky) {
         rBulk.cholesky->factorize(a_bb);
         if (rBulk.cholesky->info() != Eigen::Success) {
             rBulk.cholesky.reset();
             // Not positive definite: MUMPS's symmetric run assumed it was; take its unsymmetric factorisation.
             if (symmetric_coupling)
-                have_product =
-                    detail::SchurProductWithMumps(a_bb, rBulk.a_bc, rBulk.a_cb, false, {}, rBulk.schur_product);
+                have_product = detail::SchurProductWithMumps(a_bb, rBulk.a_bc, rBulk.a_cb,
+                                                             detail::SchurSymmetry::UNSYMMETRIC, {},
+                                                             rBulk.schur_product);
         }
     }
     if (!rBulk.cholesky) {

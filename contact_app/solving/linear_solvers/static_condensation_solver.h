@@ -36,20 +36,53 @@ inline constexpr std::size_t kAutoCondensationMaximumInterface = 12000;
 /// out of core they no longer add their size to the run's peak memory (docs/theory/static_condensation.md §2).
 inline constexpr double kSchurOutOfCoreFactorBytes = 256.0 * (1 << 20);
 
+/// A bulk whose Cholesky factor CHOLMOD's analysis expects to take more than this share of the memory available is
+/// not factorised in memory: MUMPS's factorisation for P is kept instead, out of core, and solves the bulk from disk
+/// (docs/theory/static_condensation.md §2).
+inline constexpr double kBulkInCoreShare = 0.5;
+
 namespace detail {
 
-/// P = A_CB A_BB⁻¹ A_BC as minus the Schur complement of [A_BB A_BC; A_CB 0] on C (MUMPS, ICNTL(19)): one sparse
-/// factorisation with C eliminated last instead of n_C solves with the bulk factor.
-/// @param a_bb the bulk block A_BB (n_B × n_B)
-/// @param a_bc the coupling block A_BC (n_B × n_C)
-/// @param a_cb the coupling block A_CB (n_C × n_B)
-/// @param symmetric A_BB symmetric and A_CB = A_BCᵀ: MUMPS's LDLᵀ on the lower triangles (half the work and memory)
-/// @param bulk_order elimination order of the bulk (CHOLMOD's), or empty for MUMPS's own
-/// @param[out] rProduct P, n_C × n_C
-/// @param out_of_core_bytes factors expected above this size go to the temporary directory (TMPDIR, else /tmp)
-/// @return false if MUMPS fails (the caller then takes the bulk factor's solves)
+/// How MUMPS factorises [A_BB A_BC; A_CB 0] (SYM): the whole matrix (LU), or its lower triangle when A_CB = A_BCᵀ,
+/// with A_BB positive definite (LDLᵀ, no pivoting) or of any inertia (LDLᵀ with 2×2 pivots).
+enum class SchurSymmetry { UNSYMMETRIC = 0, POSITIVE_DEFINITE = 1, SYMMETRIC = 2 };
+
+/// MUMPS's factorisation of [A_BB A_BC; A_CB 0] with C eliminated last (ICNTL(19)): P = A_CB A_BB⁻¹ A_BC is minus its
+/// Schur complement on C, one sparse factorisation instead of n_C solves with a bulk factor. While kept, the factor
+/// also solves A_BB x = b (job 3 with ICNTL(26) = 0: the internal problem, C held at zero).
+class MumpsSchurFactorisation {
+public:
+    MumpsSchurFactorisation();
+    ~MumpsSchurFactorisation();
+    MumpsSchurFactorisation(const MumpsSchurFactorisation&) = delete;
+    MumpsSchurFactorisation& operator=(const MumpsSchurFactorisation&) = delete;
+
+    /// @param a_bb the bulk block A_BB (n_B × n_B)
+    /// @param a_bc the coupling block A_BC (n_B × n_C)
+    /// @param a_cb the coupling block A_CB (n_C × n_B)
+    /// @param symmetry how MUMPS factorises (the symmetric kinds read the lower triangles only)
+    /// @param bulk_order elimination order of the bulk (CHOLMOD's), or empty for MUMPS's own
+    /// @param[out] rProduct P, n_C × n_C; MUMPS writes into its storage, which must outlive a kept factor
+    /// @param out_of_core_bytes factors expected above this size go to the temporary directory (TMPDIR, else /tmp)
+    /// @return false if MUMPS fails (nothing is kept)
+    bool Compute(const SparseMatrixType& a_bb, const SparseMatrixType& a_bc, const SparseMatrixType& a_cb,
+                 SchurSymmetry symmetry, const std::vector<int>& bulk_order, Eigen::MatrixXd& rProduct,
+                 double out_of_core_bytes);
+    /// @param rhs n_B rows @return A_BB⁻¹ rhs from the kept factor @throws ConvergenceError if MUMPS fails
+    Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs) const;
+    /// True when the factor is out of core.
+    bool OutOfCore() const;
+    /// Frees the factor and deletes its files.
+    void Release();
+
+private:
+    struct Instance;
+    std::unique_ptr<Instance> mInstance;
+};
+
+/// P alone: MumpsSchurFactorisation::Compute, then its factor released. @return false if MUMPS fails
 bool SchurProductWithMumps(const SparseMatrixType& a_bb, const SparseMatrixType& a_bc, const SparseMatrixType& a_cb,
-                           bool symmetric, const std::vector<int>& bulk_order, Eigen::MatrixXd& rProduct,
+                           SchurSymmetry symmetry, const std::vector<int>& bulk_order, Eigen::MatrixXd& rProduct,
                            double out_of_core_bytes = kSchurOutOfCoreFactorBytes);
 
 }  // namespace detail
@@ -86,6 +119,9 @@ public:
 
     /// Whether the last Solve was condensed.
     bool LastSolveWasCondensed() const { return mLastCondensed; }
+    /// Bulk factors CHOLMOD expects above @p bytes are kept out of core by MUMPS instead (0: always; negative, the
+    /// default: kBulkInCoreShare of the memory available when the bulk is factorised).
+    void SetBulkInCoreLimit(double bytes) { mBulkInCoreBytes = bytes; }
     /// The solver of the full system.
     LinearSolver::Pointer InnerSolver() const { return mInner; }
 
@@ -122,6 +158,7 @@ private:
     bool mBulkChangedLastSolve = false;
     std::string mStopped;  // why the condensation was given up for the run ("" = it was not)
     bool mLastCondensed = false;
+    double mBulkInCoreBytes = -1.0;
     LinearSolverStatistics mStatistics;
 };
 

@@ -131,6 +131,14 @@ double Difference(StaticCondensationSolver& solver, GridSystem& grid, SparseMatr
 
 std::shared_ptr<LinearSolver> Umfpack() { return std::make_shared<DirectSolver>(DirectSolverKind::UmfPack); }
 
+/// Files of MUMPS's out-of-core factors for the Schur product in the temporary directory.
+std::size_t SchurFactorFiles() {
+    std::size_t count = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
+        count += entry.path().filename().string().rfind("contact_app_schur_", 0) == 0;
+    return count;
+}
+
 TEST(StaticCondensationSolver, EqualsTheFullSolveAndReusesTheBulk) {
     GridSystem grid;
     StaticCondensationSolver solver(Umfpack(), StaticCondensationMode::On);
@@ -146,6 +154,28 @@ TEST(StaticCondensationSolver, EqualsTheFullSolveAndReusesTheBulk) {
     EXPECT_EQ(statistics.interface_size, static_cast<std::size_t>(3 * grid.nx));
     EXPECT_EQ(statistics.bulk_size, static_cast<std::size_t>(grid.Size() - 3 * grid.nx));
     EXPECT_EQ(statistics.factorizations, 0u);  // the inner solver never ran
+}
+
+// A bulk factor over the in-core limit (0 bytes here): MUMPS's factorisation for P is kept out of core and solves
+// the bulk, for a definite and for an indefinite symmetric bulk (LDLᵀ with 2×2 pivots), and leaves no files.
+TEST(StaticCondensationSolver, BulkOverTheInCoreLimitIsSolvedByMumpsOutOfCore) {
+    const std::size_t before = SchurFactorFiles();
+    for (const double indefinite : {0.0, -40.0}) {
+        GridSystem grid;
+        StaticCondensationSolver solver(Umfpack(), StaticCondensationMode::On);
+        solver.SetBulkInCoreLimit(0.0);
+        Triplets bulk = grid.Bulk();
+        for (int i : {2, 5}) bulk.emplace_back(grid.Displacement(i, 3, 0), grid.Displacement(i, 3, 0), indefinite);
+        for (unsigned iteration = 0; iteration < 3; ++iteration) {
+            EXPECT_LT(Difference(solver, grid, grid.Assemble(bulk, grid.Contact(iteration)), grid.Rhs(iteration)),
+                      1e-10);
+            EXPECT_TRUE(solver.LastSolveWasCondensed());
+            EXPECT_GT(SchurFactorFiles(), before);  // the factor on disk while the condensation keeps it
+        }
+        EXPECT_EQ(solver.Statistics().bulk_factorizations, 1u);
+        EXPECT_EQ(solver.Statistics().solver, "static condensation (bulk mumps out of core, interface dense LU)");
+    }
+    EXPECT_EQ(SchurFactorFiles(), before);
 }
 
 TEST(StaticCondensationSolver, UnsymmetricBulkTakesTheLuPath) {
@@ -267,26 +297,22 @@ struct SchurBlocks {
 };
 
 TEST(StaticCondensationSolver, SchurProductOutOfCoreEqualsInCoreAndLeavesNoFiles) {
-    namespace fs = std::filesystem;
-    const auto leftovers = [] {
-        std::size_t count = 0;
-        for (const auto& entry : fs::directory_iterator(fs::temp_directory_path()))
-            count += entry.path().filename().string().rfind("contact_app_schur_", 0) == 0;
-        return count;
-    };
-    const std::size_t before = leftovers();
-    for (const bool symmetric : {true, false}) {
+    const std::size_t before = SchurFactorFiles();
+    using detail::SchurSymmetry;
+    for (const SchurSymmetry symmetry :
+         {SchurSymmetry::POSITIVE_DEFINITE, SchurSymmetry::SYMMETRIC, SchurSymmetry::UNSYMMETRIC}) {
+        const bool symmetric = symmetry != SchurSymmetry::UNSYMMETRIC;
         const SchurBlocks blocks(40, 25, symmetric);
         const Eigen::MatrixXd reference = blocks.Dense();
         Eigen::MatrixXd in_core, out_of_core;
-        ASSERT_TRUE(detail::SchurProductWithMumps(blocks.a_bb, blocks.a_bc, blocks.a_cb, symmetric, {}, in_core,
+        ASSERT_TRUE(detail::SchurProductWithMumps(blocks.a_bb, blocks.a_bc, blocks.a_cb, symmetry, {}, in_core,
                                                   std::numeric_limits<double>::infinity()));
-        ASSERT_TRUE(detail::SchurProductWithMumps(blocks.a_bb, blocks.a_bc, blocks.a_cb, symmetric, {}, out_of_core,
+        ASSERT_TRUE(detail::SchurProductWithMumps(blocks.a_bb, blocks.a_bc, blocks.a_cb, symmetry, {}, out_of_core,
                                                   0.0));
         EXPECT_LT((in_core - reference).norm(), 1e-12 * reference.norm()) << symmetric;
         EXPECT_EQ((out_of_core - in_core).norm(), 0.0) << symmetric;
     }
-    EXPECT_EQ(leftovers(), before);
+    EXPECT_EQ(SchurFactorFiles(), before);
 }
 
 TEST(StaticCondensationSolver, ModeNames) {
