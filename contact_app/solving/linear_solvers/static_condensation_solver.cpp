@@ -322,6 +322,13 @@ std::string StaticCondensationSolver::Refusal(std::size_t size, std::size_t inte
     if (static_cast<double>(interface_size) > kAutoCondensationMaximumShare * static_cast<double>(size))
         return Concat("interface of ", interface_size, " equations, over ", 100.0 * kAutoCondensationMaximumShare,
                       " % of the ", size);
+    const double dense_bytes = 16.0 * static_cast<double>(interface_size) * static_cast<double>(interface_size);
+    const double held = mBulk ? 8.0 * static_cast<double>(mBulk->schur_product.size()) : 0.0;
+    const double available = AvailableMemoryBytes();
+    if (available >= 0.0 && dense_bytes > kAutoCondensationDenseShare * (available + held))
+        return Concat("interface of ", interface_size, " equations, whose dense P and S (", dense_bytes / 1e9,
+                      " GB) would take over ", 100.0 * kAutoCondensationDenseShare, " % of the ",
+                      (available + held) / 1e9, " GB of memory available");
     if (interface_size > kAutoCondensationMaximumInterface)
         return Concat("interface of ", interface_size, " equations, over the ", kAutoCondensationMaximumInterface,
                       " a dense Schur complement may hold");

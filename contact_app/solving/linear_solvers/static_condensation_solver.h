@@ -27,10 +27,13 @@ StaticCondensationMode ParseStaticCondensationMode(const std::string& name);
 inline constexpr std::size_t kAutoCondensationMinimumSize = 20000;
 /// ...whose interface holds at most this share of the equations...
 inline constexpr double kAutoCondensationMaximumShare = 0.1;
-/// ...and at most this many equations (the dense Schur complement takes 8 n_I² bytes: 1.15 GB at 12 000; its LU
-/// ∝ n_I³, 7.5 s at 10 288 on 2 cores, while the whole system's sparse factorisation at that size took 55 s:
-/// benchmarks/README.md, "Larger levels").
-inline constexpr std::size_t kAutoCondensationMaximumInterface = 12000;
+/// ...and at most this many equations (P and S are dense, 8 n_I² bytes each: 3.2 GB each at 20 000; the LU of S
+/// ∝ n_I³ took 7.5 s at 10 288 and about 60 s at 19 142 on 2 cores, against 55 s and, extrapolated, about 300 s for
+/// one sparse factorisation of the whole 4.1e5- and 1.05e6-equation systems: benchmarks/README.md, "Larger levels")...
+inline constexpr std::size_t kAutoCondensationMaximumInterface = 20000;
+/// ...while P and S (16 n_I² bytes) take at most this share of the memory available (that of a condensation already
+/// held counted as available).
+inline constexpr double kAutoCondensationDenseShare = 0.5;
 /// MUMPS's factors for the Schur product P are written to disk as they are computed (out of core) when its analysis
 /// expects more than this many bytes of them: P is all that is kept, so the factors never need to be read back, and
 /// out of core they no longer add their size to the run's peak memory (docs/theory/static_condensation.md §2).
