@@ -2,6 +2,8 @@
 // Small systems with known properties, and the statistics checks, for the linear-solver tests.
 #pragma once
 
+#include <cstddef>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -11,6 +13,14 @@
 #include "contact_app/solving/system_types.h"
 
 namespace contact_app::testing {
+
+/// Files in the temporary directory whose names start with @p prefix (MUMPS's out-of-core factors).
+inline std::size_t TemporaryFiles(const std::string& prefix) {
+    std::size_t count = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
+        count += entry.path().filename().string().rfind(prefix, 0) == 0;
+    return count;
+}
 
 /// 1D Laplacian with Dirichlet ends (SPD, condition ~ n²).
 inline SparseMatrixType Laplacian(int n) {

@@ -2,7 +2,6 @@
 // MumpsSolver: unsymmetric and saddle-point solves, analysis reuse, orderings, statistics, errors.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <string>
 
 #include "contact_app/kernel/exceptions.h"
@@ -129,12 +128,7 @@ TEST(MumpsSolver, RedoesTheFactorisationWithMoreWorkingSpace) {
 }
 
 /// Files of MUMPS's out-of-core factors in the temporary directory.
-std::size_t OutOfCoreFiles() {
-    std::size_t count = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
-        count += entry.path().filename().string().rfind("contact_app_mumps_", 0) == 0;
-    return count;
-}
+std::size_t OutOfCoreFiles() { return testing::TemporaryFiles("contact_app_mumps_"); }
 
 /// A limit of 0 bytes sends every factorisation out of core: the solutions are those in core, the factors are on disk
 /// while the solver keeps them and gone with it; the default (70 % of the available memory) keeps these in core.

@@ -3,7 +3,6 @@
 // reuse of the condensed bulk, recondensation and refusals.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <limits>
 #include <random>
 #include <string>
@@ -18,6 +17,7 @@
 #include "contact_app/kernel/variables.h"
 #include "contact_app/solving/linear_solvers/direct_solver.h"
 #include "contact_app/solving/linear_solvers/static_condensation_solver.h"
+#include "tests/cpp/solving/linear_solver_test_utilities.h"
 
 namespace contact_app {
 namespace {
@@ -132,12 +132,7 @@ double Difference(StaticCondensationSolver& solver, GridSystem& grid, SparseMatr
 std::shared_ptr<LinearSolver> Umfpack() { return std::make_shared<DirectSolver>(DirectSolverKind::UmfPack); }
 
 /// Files of MUMPS's out-of-core factors for the Schur product in the temporary directory.
-std::size_t SchurFactorFiles() {
-    std::size_t count = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
-        count += entry.path().filename().string().rfind("contact_app_schur_", 0) == 0;
-    return count;
-}
+std::size_t SchurFactorFiles() { return testing::TemporaryFiles("contact_app_schur_"); }
 
 TEST(StaticCondensationSolver, EqualsTheFullSolveAndReusesTheBulk) {
     GridSystem grid;
